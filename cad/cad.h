@@ -1,0 +1,140 @@
+/* semquad cad/ — the only layer that sees OpenCASCADE and CGAL.
+ *
+ * A C contract over a C++ shim: opaque handles, plain C types, every
+ * OpenCASCADE/CGAL exception caught and turned into an sq_status + message.
+ * Nothing here prints to stdout or stderr.
+ *
+ * Frames and orientation (../shared/DESIGN.md, "Conventions"): a planar face
+ * is described in a 2D frame (origin O, axes X, Y) of its plane chosen so that
+ * the face normal is +Z = X x Y.  When the face normal is parallel to the
+ * global z axis, X is the global x axis, so coordinates read as in the file.
+ * In that frame the outer loop runs counter-clockwise and holes clockwise:
+ * the face is always on the left of the direction of travel.
+ *
+ * Lengths are in the file's own unit (no conversion to millimetres). */
+#ifndef SQ_CAD_H
+#define SQ_CAD_H
+
+#include "sq_status.h"
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+/* ---- a CAD file ---------------------------------------------------------- */
+
+typedef struct cad_model cad_model; /* opaque: the shape read from a file */
+
+/* Read a STEP (.step/.stp), IGES (.iges/.igs) or BREP (.brep/.brp) file,
+ * chosen by extension (case-insensitive) and checked by content.
+ * Returns SQ_ERR_INPUT (missing, unreadable, empty, not valid CAD, no face)
+ * with a one-line message.  *out stays NULL on failure. */
+sq_status cad_model_read(const char *path, cad_model **out, sq_error *err);
+void cad_model_free(cad_model **model); /* NULL-safe, NULLs *model */
+
+/* Length unit of the file as written: "mm", "m", "cm", "inch", "foot",
+ * "micrometre" or "unknown" (BREP files carry no unit). */
+const char *cad_model_unit(const cad_model *model);
+
+int cad_model_num_faces(const cad_model *model);
+
+/* Surface type name of face `index`: "plane", "cylinder", "cone", "sphere",
+ * "torus", "bezier", "bspline", "revolution", "extrusion", "offset",
+ * "other".  NULL if the index is out of range. */
+const char *cad_model_face_surface(const cad_model *model, int index);
+
+/* Index of the default face: the only planar face if there is exactly one,
+ * else 0 (and *note is set to a one-line explanation, else to NULL). */
+int cad_model_default_face(const cad_model *model, const char **note);
+
+/* ---- a planar face in its 2D frame --------------------------------------- */
+
+typedef struct cad_face cad_face; /* opaque */
+
+typedef enum {
+    CAD_EDGE_LINE = 0,
+    CAD_EDGE_CIRCLE,
+    CAD_EDGE_ELLIPSE,
+    CAD_EDGE_HYPERBOLA,
+    CAD_EDGE_PARABOLA,
+    CAD_EDGE_BEZIER,
+    CAD_EDGE_BSPLINE,
+    CAD_EDGE_OFFSET,
+    CAD_EDGE_OTHER
+} cad_edge_type;
+
+const char *cad_edge_type_name(cad_edge_type type); /* "line", "circle", ... */
+
+/* Extract face `index` of the model.  SQ_ERR_USAGE if the index is out of
+ * range; SQ_ERR_GEOMETRY if the face is not planar (the message names its
+ * surface type) or has a degenerate boundary. */
+sq_status cad_face_create(const cad_model *model, int index, cad_face **out, sq_error *err);
+void cad_face_free(cad_face **face); /* NULL-safe, NULLs *face */
+
+/* The 2D frame: origin[3], xdir[3], ydir[3] in the file's 3D coordinates. */
+void cad_face_frame(const cad_face *face, double origin[3], double xdir[3], double ydir[3]);
+
+/* Loops: loop 0 is the outer loop, loops 1.. are holes.  Edges are numbered
+ * globally 0..num_edges-1, loop by loop, each loop's edges in the order of
+ * travel; edge e of loop l is loop_first_edge(l) + k, k < loop_num_edges(l).
+ * The end of each edge is the start of the next one in its loop, and the
+ * last edge of a loop ends where its first begins. */
+int cad_face_num_loops(const cad_face *face);
+int cad_face_loop_first_edge(const cad_face *face, int loop);
+int cad_face_loop_num_edges(const cad_face *face, int loop);
+int cad_face_num_edges(const cad_face *face);
+int cad_face_edge_loop(const cad_face *face, int edge);
+cad_edge_type cad_face_edge_type(const cad_face *face, int edge);
+double cad_face_edge_length(const cad_face *face, int edge);
+
+/* Evaluate edge `edge` at arc length s in [0, length], measured in the
+ * direction of travel.  Any of xy[2], tangent[2] (unit, direction of travel)
+ * and curvature (signed: > 0 where the boundary turns left, i.e. towards the
+ * face) may be NULL. */
+sq_status cad_face_edge_eval(const cad_face *face, int edge, double s, double xy[2],
+                             double tangent[2], double *curvature, sq_error *err);
+
+/* Closest point of edge `edge` to p: arc length *s and foot[2] (either may
+ * be NULL); *dist its distance (may be NULL). */
+sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2], double *s,
+                                double foot[2], double *dist, sq_error *err);
+
+/* ---- constrained Delaunay refinement (CGAL) ------------------------------ */
+
+/* Local target size at a point; return <= 0 for "no bound here". */
+typedef double (*cad_size_fn)(const double xy[2], void *ctx);
+
+typedef struct {
+    int npoints;                /* input points, 2*npoints in xy */
+    const double *xy;
+    int nsegments;              /* constrained segments, 2*nsegments in seg */
+    const int *seg;             /* point indices */
+    int nholes;                 /* one seed point inside each hole, 2*nholes */
+    const double *holes;
+    double min_angle_deg;       /* minimum angle bound, <= 30 (CGAL's guarantee) */
+    double max_size;            /* longest edge bound, <= 0: none */
+    cad_size_fn size;           /* optional local size bound (NULL: none) */
+    void *size_ctx;
+} cad_cdt_input;
+
+typedef struct {
+    int nverts;
+    double *xy;      /* 2*nverts */
+    int *source;     /* per vertex: index of the input point, or -1 (Steiner) */
+    int *on_segment; /* per vertex: for a Steiner vertex on a constrained segment,
+                        that input segment's index; else -1 */
+    int ntris;
+    int *tri;        /* 3*ntris vertex indices, counter-clockwise */
+} cad_cdt_output;
+
+/* Constrained Delaunay triangulation of the region bounded by the segments
+ * (minus the holes' regions), refined by CGAL's Delaunay mesher to the angle
+ * and size bounds.  Refinement may split constrained segments (on_segment
+ * says which).  The caller frees the output with cad_cdt_output_free. */
+sq_status cad_cdt_mesh(const cad_cdt_input *in, cad_cdt_output *out, sq_error *err);
+void cad_cdt_output_free(cad_cdt_output *out); /* frees the arrays, zeroes the struct */
+
+#ifdef __cplusplus
+}
+#endif
+#endif

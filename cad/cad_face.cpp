@@ -1,0 +1,526 @@
+// semquad cad/ — a planar face in its 2D frame: boundary loops, edges,
+// evaluation by arc length and projection.
+//
+// design:
+//  1. frame: n = outward normal of the face (parametric normal of the plane,
+//     reversed with the face).  If n is parallel to z: X, Y = global x, y and
+//     O on the global z axis, so coordinates read as in the file; else X = the
+//     plane's X direction, Y = n x X and O = the plane's location;
+//  2. loops: outer wire (BRepTools::OuterWire) then the other wires, edges in
+//     order of travel (BRepTools_WireExplorer), degenerated and zero-length
+//     edges skipped, each edge travelled along its orientation in the wire;
+//  3. arc length: per edge a table of (parameter, arc length) from adaptive
+//     10-point Gauss-Legendre quadrature of |C'(u)| on the curve's C2
+//     intervals; s -> u by Newton steps inside one table interval;
+//  4. orientation: signed area by Green's theorem; if the outer loop is
+//     negative, it is reversed (plane z = const, normal -z) or the frame is
+//     mirrored (Y -> -Y, other planes); a positive hole is reversed;
+//  5. checks: each edge ends where the next one starts.
+#include "cad_private.hxx"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepTools.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Tool.hxx>
+#include <Extrema_ExtPC.hxx>
+#include <Extrema_POnCurv.hxx>
+#include <TColStd_Array1OfReal.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Edge.hxx>
+#include <TopoDS_Iterator.hxx>
+#include <TopoDS_Wire.hxx>
+#include <gp_Pnt.hxx>
+#include <gp_Vec.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <memory>
+
+namespace {
+
+// 10-point Gauss-Legendre rule on [-1, 1] (Abramowitz & Stegun, table 25.4).
+const double GL_X[5] = {0.1488743389816312108848260, 0.4333953941292471907992659,
+                        0.6794095682990244062343274, 0.8650633666889845107320967,
+                        0.9739065285171717200779640};
+const double GL_W[5] = {0.2955242247147528701738930, 0.2692667193099963550912269,
+                        0.2190863625159820439955349, 0.1494513491505805931457763,
+                        0.0666713443086881375935688};
+
+struct Edge {
+    TopoDS_Edge edge;
+    Handle(BRepAdaptor_Curve) curve;
+    double u0 = 0, u1 = 0;  // parameter range
+    bool reversed = false;  // travelled from u1 to u0
+    double length = 0;
+    cad_edge_type type = CAD_EDGE_OTHER;
+    int loop = 0;
+    std::vector<double> tu; // table: parameters, increasing, tu[0] = u0, back = u1
+    std::vector<double> ts; // forward arc length at tu
+};
+
+double speed(const Edge &e, double u)
+{
+    gp_Pnt p;
+    gp_Vec d1;
+    e.curve->D1(u, p, d1);
+    return d1.Magnitude();
+}
+
+// Arc length of the curve between a and b by one 10-point rule.
+double gl_length(const Edge &e, double a, double b)
+{
+    double c = 0.5 * (a + b), h = 0.5 * (b - a), sum = 0;
+    for (int i = 0; i < 5; ++i)
+        sum += GL_W[i] * (speed(e, c - h * GL_X[i]) + speed(e, c + h * GL_X[i]));
+    return sum * h;
+}
+
+void adapt(Edge &e, double a, double b, double whole, int depth)
+{
+    double m = 0.5 * (a + b);
+    double l = gl_length(e, a, m), r = gl_length(e, m, b);
+    if (depth >= 24 || std::fabs(l + r - whole) <= 1e-15 * std::max(whole, 1e-300) + 1e-300) {
+        e.tu.push_back(m);
+        e.ts.push_back(e.ts.back() + l);
+        e.tu.push_back(b);
+        e.ts.push_back(e.ts.back() + r);
+        return;
+    }
+    adapt(e, a, m, l, depth + 1);
+    adapt(e, m, b, r, depth + 1);
+}
+
+void build_table(Edge &e)
+{
+    int n = e.curve->NbIntervals(GeomAbs_C2);
+    TColStd_Array1OfReal iv(1, n + 1);
+    e.curve->Intervals(iv, GeomAbs_C2);
+    std::vector<double> br;
+    br.push_back(e.u0);
+    for (int i = 1; i <= n + 1; ++i)
+        if (iv(i) > br.back() && iv(i) < e.u1) br.push_back(iv(i));
+    br.push_back(e.u1);
+    e.tu.assign(1, e.u0);
+    e.ts.assign(1, 0.0);
+    for (size_t k = 0; k + 1 < br.size(); ++k) {
+        const int split = 4; // start with 4 pieces per smooth interval
+        double a = br[k], h = (br[k + 1] - br[k]) / split;
+        for (int j = 0; j < split; ++j) {
+            double pa = a + j * h, pb = j + 1 == split ? br[k + 1] : a + (j + 1) * h;
+            adapt(e, pa, pb, gl_length(e, pa, pb), 0);
+        }
+    }
+    e.length = e.ts.back();
+}
+
+// Forward arc length at parameter u.
+double s_of_u(const Edge &e, double u)
+{
+    if (u <= e.tu.front()) return 0;
+    if (u >= e.tu.back()) return e.length;
+    size_t k = (size_t)(std::upper_bound(e.tu.begin(), e.tu.end(), u) - e.tu.begin()) - 1;
+    return e.ts[k] + gl_length(e, e.tu[k], u);
+}
+
+// Parameter at forward arc length s.
+double u_of_s(const Edge &e, double s)
+{
+    if (s <= 0) return e.u0;
+    if (s >= e.length) return e.u1;
+    size_t k = (size_t)(std::upper_bound(e.ts.begin(), e.ts.end(), s) - e.ts.begin()) - 1;
+    if (k + 1 >= e.ts.size()) return e.u1;
+    double ua = e.tu[k], ub = e.tu[k + 1], sa = e.ts[k], sb = e.ts[k + 1];
+    double u = sb > sa ? ua + (s - sa) / (sb - sa) * (ub - ua) : ua;
+    double tol = 1e-15 * std::max(e.length, 1e-300);
+    for (int it = 0; it < 30; ++it) {
+        double f = sa + gl_length(e, ua, u) - s;
+        double d = speed(e, u);
+        if (d <= 0) break;
+        double un = std::min(ub, std::max(ua, u - f / d));
+        double step = std::fabs(un - u);
+        u = un;
+        if (std::fabs(f) <= tol || step <= 1e-16 * std::max(1.0, std::fabs(u))) break;
+    }
+    return u;
+}
+
+cad_edge_type edge_type(GeomAbs_CurveType t)
+{
+    switch (t) {
+    case GeomAbs_Line: return CAD_EDGE_LINE;
+    case GeomAbs_Circle: return CAD_EDGE_CIRCLE;
+    case GeomAbs_Ellipse: return CAD_EDGE_ELLIPSE;
+    case GeomAbs_Hyperbola: return CAD_EDGE_HYPERBOLA;
+    case GeomAbs_Parabola: return CAD_EDGE_PARABOLA;
+    case GeomAbs_BezierCurve: return CAD_EDGE_BEZIER;
+    case GeomAbs_BSplineCurve: return CAD_EDGE_BSPLINE;
+    case GeomAbs_OffsetCurve: return CAD_EDGE_OFFSET;
+    default: return CAD_EDGE_OTHER;
+    }
+}
+
+} // namespace
+
+struct cad_face {
+    double O[3], X[3], Y[3];
+    std::vector<Edge> edges;
+    std::vector<int> loop_first, loop_n;
+
+    void to2d(const gp_Pnt &p, double xy[2]) const
+    {
+        double d[3] = {p.X() - O[0], p.Y() - O[1], p.Z() - O[2]};
+        xy[0] = d[0] * X[0] + d[1] * X[1] + d[2] * X[2];
+        xy[1] = d[0] * Y[0] + d[1] * Y[1] + d[2] * Y[2];
+    }
+    void vec2d(const gp_Vec &v, double xy[2]) const
+    {
+        xy[0] = v.X() * X[0] + v.Y() * X[1] + v.Z() * X[2];
+        xy[1] = v.X() * Y[0] + v.Y() * Y[1] + v.Z() * Y[2];
+    }
+    gp_Pnt to3d(const double xy[2]) const
+    {
+        return gp_Pnt(O[0] + xy[0] * X[0] + xy[1] * Y[0], O[1] + xy[0] * X[1] + xy[1] * Y[1],
+                      O[2] + xy[0] * X[2] + xy[1] * Y[2]);
+    }
+    // Point, unit tangent and curvature at parameter u, direction of travel.
+    void eval_u(const Edge &e, double u, double xy[2], double t[2], double *kappa) const
+    {
+        gp_Pnt p;
+        gp_Vec d1, d2;
+        e.curve->D2(u, p, d1, d2);
+        double a[2], b[2];
+        vec2d(d1, a);
+        vec2d(d2, b);
+        double sg = e.reversed ? -1.0 : 1.0, n = std::hypot(a[0], a[1]);
+        if (xy) to2d(p, xy);
+        if (t) {
+            t[0] = n > 0 ? sg * a[0] / n : 0;
+            t[1] = n > 0 ? sg * a[1] / n : 0;
+        }
+        if (kappa) *kappa = n > 0 ? sg * (a[0] * b[1] - a[1] * b[0]) / (n * n * n) : 0;
+    }
+    // Signed area contribution 1/2 int (x dy - y dx) along the travel.
+    double edge_area(const Edge &e) const
+    {
+        double sum = 0;
+        for (size_t k = 0; k + 1 < e.tu.size(); ++k) {
+            double c = 0.5 * (e.tu[k] + e.tu[k + 1]), h = 0.5 * (e.tu[k + 1] - e.tu[k]);
+            for (int i = 0; i < 10; ++i) {
+                double u = c + (i < 5 ? -h * GL_X[i] : h * GL_X[i - 5]);
+                gp_Pnt p;
+                gp_Vec d1;
+                e.curve->D1(u, p, d1);
+                double xy[2], v[2];
+                to2d(p, xy);
+                vec2d(d1, v);
+                sum += GL_W[i % 5] * h * 0.5 * (xy[0] * v[1] - xy[1] * v[0]);
+            }
+        }
+        return e.reversed ? -sum : sum;
+    }
+    double loop_area(int l) const
+    {
+        double a = 0;
+        for (int k = 0; k < loop_n[(size_t)l]; ++k) a += edge_area(edges[(size_t)(loop_first[(size_t)l] + k)]);
+        return a;
+    }
+    void reverse_loop(int l)
+    {
+        auto b = edges.begin() + loop_first[(size_t)l];
+        std::reverse(b, b + loop_n[(size_t)l]);
+        for (int k = 0; k < loop_n[(size_t)l]; ++k) b[k].reversed = !b[k].reversed;
+    }
+    gp_Pnt start3d(const Edge &e) const { return e.curve->Value(e.reversed ? e.u1 : e.u0); }
+    gp_Pnt end3d(const Edge &e) const { return e.curve->Value(e.reversed ? e.u0 : e.u1); }
+};
+
+namespace {
+
+sq_status face_create(const cad_model *model, int index, cad_face **out, sq_error *err)
+{
+    int nf = model->faces.Extent();
+    if (index < 0 || index >= nf)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "face %d out of range (%s has %d face%s)", index,
+                       model->path.c_str(), nf, nf == 1 ? "" : "s");
+    TopoDS_Face face = TopoDS::Face(model->faces(index + 1));
+    gp_Pln pln;
+    if (!sqcad::face_plane(face, &pln))
+        return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d is not planar (surface: %s)", index,
+                       model->surface[(size_t)index].c_str());
+
+    std::unique_ptr<cad_face> f(new cad_face);
+    gp_Dir n = pln.Axis().Direction();
+    gp_Pnt o = pln.Location();
+    gp_Dir x, y;
+    const bool zplane = std::fabs(n.Z()) >= 1.0 - 1e-12;
+    if (zplane) {
+        // Plane z = const: the file's own x and y (whichever side the face's
+        // normal points to), origin above/below the global origin.
+        x = gp::DX();
+        y = gp::DY();
+        o = gp_Pnt(0, 0, o.Z() + (n.X() * o.X() + n.Y() * o.Y()) / n.Z());
+    } else {
+        x = pln.Position().XDirection();
+        y = n.Crossed(x);
+    }
+    f->O[0] = o.X(), f->O[1] = o.Y(), f->O[2] = o.Z();
+    f->X[0] = x.X(), f->X[1] = x.Y(), f->X[2] = x.Z();
+    f->Y[0] = y.X(), f->Y[1] = y.Y(), f->Y[2] = y.Z();
+
+    // Wires: the outer one first.
+    TopoDS_Wire outer = BRepTools::OuterWire(face);
+    if (outer.IsNull())
+        return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d has no outer boundary", index);
+    std::vector<TopoDS_Wire> wires(1, outer);
+    for (TopoDS_Iterator it(face); it.More(); it.Next())
+        if (it.Value().ShapeType() == TopAbs_WIRE && !it.Value().IsSame(outer))
+            wires.push_back(TopoDS::Wire(it.Value()));
+
+    double tol_vertex = 0;
+    for (size_t w = 0; w < wires.size(); ++w) {
+        int first = (int)f->edges.size();
+        for (BRepTools_WireExplorer wx(wires[w], face); wx.More(); wx.Next()) {
+            const TopoDS_Edge &edge = wx.Current();
+            TopAbs_Orientation ori = wx.Orientation();
+            if (ori != TopAbs_FORWARD && ori != TopAbs_REVERSED) continue; // internal/external
+            if (BRep_Tool::Degenerated(edge)) continue;
+            if (!BRep_Tool::IsGeometric(edge)) continue;
+            Edge e;
+            e.edge = edge;
+            e.curve = new BRepAdaptor_Curve(edge);
+            e.u0 = e.curve->FirstParameter();
+            e.u1 = e.curve->LastParameter();
+            if (!(e.u1 > e.u0)) continue;
+            e.reversed = ori == TopAbs_REVERSED;
+            e.type = edge_type(e.curve->GetType());
+            e.loop = (int)w;
+            build_table(e);
+            tol_vertex = std::max(tol_vertex, BRep_Tool::Tolerance(edge));
+            f->edges.push_back(std::move(e));
+        }
+        int cnt = (int)f->edges.size() - first;
+        if (cnt == 0) {
+            if (w == 0) return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d: outer loop has no edge", index);
+            continue; // an empty inner wire: ignore
+        }
+        f->loop_first.push_back(first);
+        f->loop_n.push_back(cnt);
+    }
+    int nl = (int)f->loop_first.size();
+    for (int l = 0; l < nl; ++l)
+        for (int k = 0; k < f->loop_n[(size_t)l]; ++k) f->edges[(size_t)(f->loop_first[(size_t)l] + k)].loop = l;
+
+    // Size of the face: drop edges shorter than a tiny fraction of it.
+    double total = 0;
+    for (const Edge &e : f->edges) total += e.length;
+    if (!(total > 0)) return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d has a degenerate boundary", index);
+    {
+        std::vector<Edge> kept;
+        std::vector<int> first, cnt;
+        for (int l = 0; l < nl; ++l) {
+            int fi = (int)kept.size();
+            for (int k = 0; k < f->loop_n[(size_t)l]; ++k) {
+                Edge &e = f->edges[(size_t)(f->loop_first[(size_t)l] + k)];
+                if (e.length > 1e-13 * total) kept.push_back(std::move(e));
+            }
+            if ((int)kept.size() > fi) {
+                first.push_back(fi);
+                cnt.push_back((int)kept.size() - fi);
+            } else if (l == 0) {
+                return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d: outer loop has zero length", index);
+            }
+        }
+        f->edges.swap(kept);
+        f->loop_first.swap(first);
+        f->loop_n.swap(cnt);
+        nl = (int)f->loop_first.size();
+        for (int l = 0; l < nl; ++l)
+            for (int k = 0; k < f->loop_n[(size_t)l]; ++k)
+                f->edges[(size_t)(f->loop_first[(size_t)l] + k)].loop = l;
+    }
+
+    // Orientation: outer counter-clockwise, holes clockwise.
+    double aout = f->loop_area(0);
+    if (!(std::fabs(aout) > 0))
+        return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d: outer loop encloses no area", index);
+    if (aout < 0) {
+        if (zplane)
+            f->reverse_loop(0); // face normal along -z: keep x, y, walk the loops the other way
+        else
+            for (double &c : f->Y) c = -c; // mirrored frame
+    }
+    for (int l = 1; l < nl; ++l)
+        if (f->loop_area(l) > 0) f->reverse_loop(l);
+
+    // Closure: each edge ends where the next one starts.
+    double gap_tol = std::max(1e-7 * total, 2.0 * tol_vertex);
+    for (int l = 0; l < nl; ++l) {
+        int n0 = f->loop_first[(size_t)l], cnt = f->loop_n[(size_t)l];
+        for (int k = 0; k < cnt; ++k) {
+            const Edge &a = f->edges[(size_t)(n0 + k)], &b = f->edges[(size_t)(n0 + (k + 1) % cnt)];
+            double gap = f->end3d(a).Distance(f->start3d(b));
+            if (gap > gap_tol)
+                return SQ_FAIL(err, SQ_ERR_GEOMETRY,
+                               "face %d: loop %d is not closed: edge %d ends %.3g away from the "
+                               "start of edge %d",
+                               index, l, n0 + k, gap, n0 + (k + 1) % cnt);
+        }
+    }
+    *out = f.release();
+    return SQ_OK;
+}
+
+} // namespace
+
+extern "C" {
+
+const char *cad_edge_type_name(cad_edge_type type)
+{
+    switch (type) {
+    case CAD_EDGE_LINE: return "line";
+    case CAD_EDGE_CIRCLE: return "circle";
+    case CAD_EDGE_ELLIPSE: return "ellipse";
+    case CAD_EDGE_HYPERBOLA: return "hyperbola";
+    case CAD_EDGE_PARABOLA: return "parabola";
+    case CAD_EDGE_BEZIER: return "bezier";
+    case CAD_EDGE_BSPLINE: return "bspline";
+    case CAD_EDGE_OFFSET: return "offset";
+    case CAD_EDGE_OTHER: return "other";
+    }
+    return "other";
+}
+
+sq_status cad_face_create(const cad_model *model, int index, cad_face **out, sq_error *err)
+{
+    if (!out) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_create: out is NULL");
+    *out = NULL;
+    if (!model) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_create: model is NULL");
+    try {
+        return face_create(model, index, out, err);
+    }
+    catch (const Standard_Failure &e) {
+        return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d: OpenCASCADE %s: %s", index,
+                       e.DynamicType()->Name(), e.GetMessageString() ? e.GetMessageString() : "");
+    }
+    SQCAD_CATCH(err)
+}
+
+void cad_face_free(cad_face **face)
+{
+    if (!face || !*face) return;
+    try {
+        delete *face;
+    } catch (...) {
+    }
+    *face = NULL;
+}
+
+void cad_face_frame(const cad_face *face, double origin[3], double xdir[3], double ydir[3])
+{
+    for (int i = 0; i < 3; ++i) {
+        if (origin) origin[i] = face ? face->O[i] : 0;
+        if (xdir) xdir[i] = face ? face->X[i] : (i == 0);
+        if (ydir) ydir[i] = face ? face->Y[i] : (i == 1);
+    }
+}
+
+int cad_face_num_loops(const cad_face *face) { return face ? (int)face->loop_first.size() : 0; }
+
+int cad_face_loop_first_edge(const cad_face *face, int loop)
+{
+    if (!face || loop < 0 || loop >= (int)face->loop_first.size()) return -1;
+    return face->loop_first[(size_t)loop];
+}
+
+int cad_face_loop_num_edges(const cad_face *face, int loop)
+{
+    if (!face || loop < 0 || loop >= (int)face->loop_n.size()) return 0;
+    return face->loop_n[(size_t)loop];
+}
+
+int cad_face_num_edges(const cad_face *face) { return face ? (int)face->edges.size() : 0; }
+
+int cad_face_edge_loop(const cad_face *face, int edge)
+{
+    if (!face || edge < 0 || edge >= (int)face->edges.size()) return -1;
+    return face->edges[(size_t)edge].loop;
+}
+
+cad_edge_type cad_face_edge_type(const cad_face *face, int edge)
+{
+    if (!face || edge < 0 || edge >= (int)face->edges.size()) return CAD_EDGE_OTHER;
+    return face->edges[(size_t)edge].type;
+}
+
+double cad_face_edge_length(const cad_face *face, int edge)
+{
+    if (!face || edge < 0 || edge >= (int)face->edges.size()) return 0;
+    return face->edges[(size_t)edge].length;
+}
+
+sq_status cad_face_edge_eval(const cad_face *face, int edge, double s, double xy[2],
+                             double tangent[2], double *curvature, sq_error *err)
+{
+    if (!face) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_edge_eval: face is NULL");
+    if (edge < 0 || edge >= (int)face->edges.size())
+        return SQ_FAIL(err, SQ_ERR_USAGE, "edge %d out of range (face has %d edges)", edge,
+                       (int)face->edges.size());
+    const Edge &e = face->edges[(size_t)edge];
+    double slack = 1e-9 * e.length;
+    if (!(s >= -slack && s <= e.length + slack))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "arc length %.17g outside [0, %.17g] on edge %d", s,
+                       e.length, edge);
+    try {
+        s = std::min(e.length, std::max(0.0, s));
+        double sf = e.reversed ? e.length - s : s;
+        face->eval_u(e, u_of_s(e, sf), xy, tangent, curvature);
+        return SQ_OK;
+    }
+    SQCAD_CATCH(err)
+}
+
+sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2], double *s,
+                                double foot[2], double *dist, sq_error *err)
+{
+    if (!face || !p) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_edge_project: NULL argument");
+    if (edge < 0 || edge >= (int)face->edges.size())
+        return SQ_FAIL(err, SQ_ERR_USAGE, "edge %d out of range (face has %d edges)", edge,
+                       (int)face->edges.size());
+    try {
+        const Edge &e = face->edges[(size_t)edge];
+        gp_Pnt P = face->to3d(p);
+        // Candidates: the end points and the extrema of the distance.
+        double best_u = e.u0, best_d2 = P.SquareDistance(e.curve->Value(e.u0));
+        double d2 = P.SquareDistance(e.curve->Value(e.u1));
+        if (d2 < best_d2) best_d2 = d2, best_u = e.u1;
+        Extrema_ExtPC ext(P, *e.curve, e.u0, e.u1, 1e-12);
+        if (ext.IsDone())
+            for (int i = 1; i <= ext.NbExt(); ++i)
+                if (ext.SquareDistance(i) < best_d2)
+                    best_d2 = ext.SquareDistance(i), best_u = ext.Point(i).Parameter();
+        // Polish with Newton on (C(u) - P) . C'(u) = 0, kept if it improves.
+        double u = best_u;
+        for (int it = 0; it < 8; ++it) {
+            gp_Pnt c;
+            gp_Vec d1, d2v;
+            e.curve->D2(u, c, d1, d2v);
+            gp_Vec r(P, c);
+            double g = r.Dot(d1), dg = d1.SquareMagnitude() + r.Dot(d2v);
+            if (!(dg > 0)) break;
+            double un = std::min(e.u1, std::max(e.u0, u - g / dg));
+            double dn = P.SquareDistance(e.curve->Value(un));
+            if (dn > best_d2) break;
+            double step = std::fabs(un - u);
+            u = un, best_d2 = dn, best_u = un;
+            if (step <= 1e-16 * std::max(1.0, std::fabs(u))) break;
+        }
+        double sf = s_of_u(e, best_u);
+        if (s) *s = std::min(e.length, std::max(0.0, e.reversed ? e.length - sf : sf));
+        if (foot) face->eval_u(e, best_u, foot, NULL, NULL);
+        if (dist) *dist = std::sqrt(best_d2);
+        return SQ_OK;
+    }
+    SQCAD_CATCH(err)
+}
+
+} // extern "C"

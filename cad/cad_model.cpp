@@ -1,0 +1,380 @@
+// semquad cad/ — reading a CAD file (STEP, IGES, BREP) into a cad_model.
+//
+// design:
+//  1. pick the reader from the file extension (case-insensitive), check the
+//     file exists and is not empty;
+//  2. read with OpenCASCADE with its messenger silenced (scoped: the printers
+//     are restored afterwards), keeping lengths in the file's own unit
+//     (STEP: the reader's system length unit is set to the file's unit;
+//     IGES: the global section's cascade unit is set to the file's unit);
+//  3. enumerate the faces with TopExp::MapShapes and classify their surfaces.
+#include "cad_private.hxx"
+
+#include <BRepAdaptor_Surface.hxx>
+#include <BRepTools.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GeomLib_IsPlanarSurface.hxx>
+#include <Geom_Surface.hxx>
+#include <IFSelect_ReturnStatus.hxx>
+#include <IGESControl_Reader.hxx>
+#include <IGESData_GlobalSection.hxx>
+#include <IGESData_IGESModel.hxx>
+#include <Message.hxx>
+#include <Message_Messenger.hxx>
+#include <STEPControl_Reader.hxx>
+#include <TColStd_SequenceOfAsciiString.hxx>
+#include <TopAbs.hxx>
+#include <TopExp.hxx>
+#include <TopoDS.hxx>
+#include <gp_Vec.hxx>
+
+#include <sys/stat.h>
+
+#include <cctype>
+#include <cerrno>
+#include <cmath>
+#include <cstdio>
+#include <cstring>
+#include <memory>
+
+namespace {
+
+// Silence OpenCASCADE's default messenger for the lifetime of the object and
+// restore its printers afterwards (no lasting change to the process).
+class QuietMessenger {
+  public:
+    QuietMessenger() : msgr_(Message::DefaultMessenger())
+    {
+        if (!msgr_.IsNull()) {
+            saved_ = msgr_->Printers();
+            msgr_->ChangePrinters().Clear();
+        }
+    }
+    ~QuietMessenger()
+    {
+        if (!msgr_.IsNull()) msgr_->ChangePrinters() = saved_;
+    }
+    QuietMessenger(const QuietMessenger &) = delete;
+    QuietMessenger &operator=(const QuietMessenger &) = delete;
+
+  private:
+    Handle(Message_Messenger) msgr_;
+    Message_SequenceOfPrinters saved_;
+};
+
+std::string lower(const std::string &s)
+{
+    std::string r(s);
+    for (char &c : r) c = (char)std::tolower((unsigned char)c);
+    return r;
+}
+
+std::string extension(const char *path)
+{
+    const char *slash = std::strrchr(path, '/');
+    const char *base = slash ? slash + 1 : path;
+    const char *dot = std::strrchr(base, '.');
+    return dot ? lower(dot + 1) : std::string();
+}
+
+// Unit name of the contract from a length factor in millimetres.
+const char *unit_from_mm(double mm)
+{
+    struct {
+        double mm;
+        const char *name;
+    } const table[] = {{1.0, "mm"},   {1000.0, "m"},     {10.0, "cm"},
+                       {25.4, "inch"}, {304.8, "foot"}, {0.001, "micrometre"}};
+    for (const auto &t : table)
+        if (std::fabs(mm - t.mm) <= 1e-9 * t.mm) return t.name;
+    return "unknown";
+}
+
+// Millimetres per unit from a STEP unit name ("millimetre", "METRE", "inch",
+// ...); <= 0 if unrecognised.
+double step_unit_mm(const std::string &name)
+{
+    std::string n = lower(name);
+    if (n.find("inch") != std::string::npos) return 25.4;
+    if (n.find("foot") != std::string::npos || n.find("feet") != std::string::npos) return 304.8;
+    if (n.find("mile") != std::string::npos) return 1609344.0;
+    if (n.find("metre") == std::string::npos && n.find("meter") == std::string::npos) return -1;
+    if (n.find("nano") != std::string::npos) return 1e-6;
+    if (n.find("micro") != std::string::npos) return 1e-3;
+    if (n.find("milli") != std::string::npos) return 1.0;
+    if (n.find("centi") != std::string::npos) return 10.0;
+    if (n.find("deci") != std::string::npos) return 100.0;
+    if (n.find("kilo") != std::string::npos) return 1e6;
+    return 1000.0; // plain metre
+}
+
+// Millimetres per unit for an IGES unit flag (IGES 5.3, global section
+// parameter 14); <= 0 if unknown.
+double iges_flag_mm(int flag)
+{
+    switch (flag) {
+    case 1: return 25.4;        // inch
+    case 2: return 1.0;         // mm
+    case 4: return 304.8;       // foot
+    case 5: return 1609344.0;   // mile
+    case 6: return 1000.0;      // metre
+    case 7: return 1e6;         // km
+    case 8: return 0.0254;      // mil
+    case 9: return 1e-3;        // micron
+    case 10: return 10.0;       // cm
+    case 11: return 25.4e-6;    // microinch
+    default: return -1;
+    }
+}
+
+sq_status read_step(const char *path, cad_model *m, sq_error *err)
+{
+    STEPControl_Reader reader;
+    if (reader.ReadFile(path) != IFSelect_RetDone)
+        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: not a readable STEP file", path);
+    TColStd_SequenceOfAsciiString lengths, angles, solids;
+    reader.FileUnits(lengths, angles, solids);
+    double mm = -1;
+    for (int i = 1; i <= lengths.Length() && mm <= 0; ++i)
+        mm = step_unit_mm(lengths(i).ToCString());
+    if (mm > 0) {
+        reader.SetSystemLengthUnit(mm); // keep lengths in the file's unit
+        m->unit = unit_from_mm(mm);
+    } else {
+        m->unit = "mm"; // unknown unit: OpenCASCADE's millimetres
+    }
+    if (reader.NbRootsForTransfer() <= 0)
+        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: STEP file holds no shape", path);
+    reader.TransferRoots();
+    if (reader.NbShapes() <= 0)
+        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: no shape could be read from the STEP file", path);
+    m->shape = reader.OneShape();
+    return SQ_OK;
+}
+
+sq_status read_iges(const char *path, cad_model *m, sq_error *err)
+{
+    IGESControl_Reader reader;
+    if (reader.ReadFile(path) != IFSelect_RetDone)
+        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: not a readable IGES file", path);
+    Handle(IGESData_IGESModel) model = reader.IGESModel();
+    if (model.IsNull()) return SQ_FAIL(err, SQ_ERR_INPUT, "%s: not a readable IGES file", path);
+    IGESData_GlobalSection gs = model->GlobalSection();
+    double mm = iges_flag_mm(gs.UnitFlag());
+    if (mm <= 0 && !gs.UnitName().IsNull()) mm = step_unit_mm(gs.UnitName()->ToCString());
+    if (mm <= 0 && !gs.UnitName().IsNull()) {
+        std::string n = lower(gs.UnitName()->ToCString());
+        if (n == "mm") mm = 1;
+        else if (n == "m") mm = 1000;
+        else if (n == "cm") mm = 10;
+        else if (n == "in") mm = 25.4;
+        else if (n == "ft") mm = 304.8;
+    }
+    if (mm > 0) {
+        gs.SetCascadeUnit(mm); // keep lengths in the file's unit
+        model->SetGlobalSection(gs);
+        m->unit = unit_from_mm(mm);
+    } else {
+        m->unit = "mm";
+    }
+    if (reader.NbRootsForTransfer() <= 0)
+        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: IGES file holds no shape", path);
+    reader.TransferRoots();
+    if (reader.NbShapes() <= 0)
+        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: no shape could be read from the IGES file", path);
+    m->shape = reader.OneShape();
+    return SQ_OK;
+}
+
+sq_status read_brep(const char *path, cad_model *m, sq_error *err)
+{
+    BRep_Builder builder;
+    TopoDS_Shape shape;
+    if (!BRepTools::Read(shape, path, builder) || shape.IsNull())
+        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: not a readable BREP file", path);
+    m->shape = shape;
+    m->unit = "unknown";
+    return SQ_OK;
+}
+
+sq_status model_read(const char *path, cad_model **out, sq_error *err)
+{
+    std::string ext = extension(path);
+    enum { STEP, IGES, BREP } kind;
+    if (ext == "step" || ext == "stp") kind = STEP;
+    else if (ext == "iges" || ext == "igs") kind = IGES;
+    else if (ext == "brep" || ext == "brp") kind = BREP;
+    else
+        return SQ_FAIL(err, SQ_ERR_INPUT,
+                       "%s: unknown CAD file extension (expected .step, .stp, .iges, .igs, "
+                       ".brep or .brp)",
+                       path);
+
+    struct stat st;
+    if (stat(path, &st) != 0)
+        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: cannot open: %s", path, std::strerror(errno));
+    if (S_ISDIR(st.st_mode)) return SQ_FAIL(err, SQ_ERR_INPUT, "%s: is a directory", path);
+    std::FILE *f = std::fopen(path, "rb");
+    if (!f) return SQ_FAIL(err, SQ_ERR_INPUT, "%s: cannot open: %s", path, std::strerror(errno));
+    int c = std::fgetc(f);
+    std::fclose(f);
+    if (c == EOF) return SQ_FAIL(err, SQ_ERR_INPUT, "%s: file is empty", path);
+
+    std::unique_ptr<cad_model> m(new cad_model);
+    m->path = path;
+    {
+        QuietMessenger quiet;
+        sq_status s = kind == STEP   ? read_step(path, m.get(), err)
+                      : kind == IGES ? read_iges(path, m.get(), err)
+                                     : read_brep(path, m.get(), err);
+        if (s != SQ_OK) return s;
+    }
+    if (m->shape.IsNull()) return SQ_FAIL(err, SQ_ERR_INPUT, "%s: no shape in the file", path);
+    TopExp::MapShapes(m->shape, TopAbs_FACE, m->faces);
+    int nf = m->faces.Extent();
+    if (nf <= 0) return SQ_FAIL(err, SQ_ERR_INPUT, "%s: the file holds no face", path);
+
+    int nplanar = 0, first_planar = -1;
+    for (int i = 0; i < nf; ++i) {
+        const TopoDS_Face &face = TopoDS::Face(m->faces(i + 1));
+        m->surface.push_back(sqcad::surface_name(face));
+        int p = sqcad::face_plane(face, nullptr) ? 1 : 0;
+        m->planar.push_back(p);
+        if (p) {
+            ++nplanar;
+            if (first_planar < 0) first_planar = i;
+        }
+    }
+    if (nplanar == 1) {
+        m->default_face = first_planar;
+    } else {
+        m->default_face = 0;
+        char buf[256];
+        if (nplanar == 0)
+            std::snprintf(buf, sizeof buf, "no planar face among %d faces; face 0 (%s) by default",
+                          nf, m->surface[0].c_str());
+        else
+            std::snprintf(buf, sizeof buf,
+                          "%d planar faces among %d; face 0 by default (choose one with --face)",
+                          nplanar, nf);
+        m->note = buf;
+    }
+    *out = m.release();
+    return SQ_OK;
+}
+
+} // namespace
+
+namespace sqcad {
+
+const char *surface_name(const TopoDS_Face &face)
+{
+    BRepAdaptor_Surface as(face, Standard_False);
+    switch (as.GetType()) {
+    case GeomAbs_Plane: return "plane";
+    case GeomAbs_Cylinder: return "cylinder";
+    case GeomAbs_Cone: return "cone";
+    case GeomAbs_Sphere: return "sphere";
+    case GeomAbs_Torus: return "torus";
+    case GeomAbs_BezierSurface: return "bezier";
+    case GeomAbs_BSplineSurface: return "bspline";
+    case GeomAbs_SurfaceOfRevolution: return "revolution";
+    case GeomAbs_SurfaceOfExtrusion: return "extrusion";
+    case GeomAbs_OffsetSurface: return "offset";
+    default: return "other";
+    }
+}
+
+bool face_plane(const TopoDS_Face &face, gp_Pln *pln)
+{
+    BRepAdaptor_Surface as(face, Standard_True);
+    gp_Pln p;
+    gp_Dir normal; // parametric normal D1U x D1V
+    if (as.GetType() == GeomAbs_Plane) {
+        p = as.Plane();
+        const gp_Ax3 &ax = p.Position();
+        normal = ax.XDirection().Crossed(ax.YDirection());
+    } else {
+        TopLoc_Location loc;
+        Handle(Geom_Surface) surf = BRep_Tool::Surface(face, loc);
+        if (surf.IsNull()) return false;
+        GeomLib_IsPlanarSurface isp(surf, 1e-7);
+        if (!isp.IsPlanar()) return false;
+        if (!pln) return true;
+        p = isp.Plan().Transformed(loc.Transformation());
+        double u = 0.5 * (as.FirstUParameter() + as.LastUParameter());
+        double v = 0.5 * (as.FirstVParameter() + as.LastVParameter());
+        gp_Pnt pt;
+        gp_Vec du, dv;
+        as.D1(u, v, pt, du, dv);
+        gp_Vec nv = du.Crossed(dv);
+        if (nv.Magnitude() <= 1e-300) return false;
+        normal = gp_Dir(nv);
+    }
+    if (!pln) return true;
+    if (face.Orientation() == TopAbs_REVERSED) normal.Reverse();
+    // The plane with its axis along the outward normal, X kept.
+    gp_Dir x = p.Position().XDirection();
+    gp_Vec xv = gp_Vec(x) - gp_Vec(normal) * gp_Vec(x).Dot(gp_Vec(normal));
+    if (xv.Magnitude() < 1e-12) xv = gp_Vec(normal.IsParallel(gp::DX(), 1e-3) ? gp::DY() : gp::DX());
+    *pln = gp_Pln(gp_Ax3(p.Location(), normal, gp_Dir(xv)));
+    return true;
+}
+
+} // namespace sqcad
+
+extern "C" {
+
+sq_status cad_model_read(const char *path, cad_model **out, sq_error *err)
+{
+    if (!out) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_model_read: out is NULL");
+    *out = NULL;
+    if (!path || !*path) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_model_read: no file name");
+    try {
+        return model_read(path, out, err);
+    }
+    catch (const Standard_Failure &e) {
+        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: cannot be read (OpenCASCADE %s: %s)", path,
+                       e.DynamicType()->Name(), e.GetMessageString() ? e.GetMessageString() : "");
+    }
+    catch (const std::bad_alloc &) {
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "%s: out of memory while reading", path);
+    }
+    catch (const std::exception &e) {
+        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: cannot be read (%s)", path, e.what());
+    }
+    catch (...) {
+        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: cannot be read (unknown exception)", path);
+    }
+}
+
+void cad_model_free(cad_model **model)
+{
+    if (!model || !*model) return;
+    try {
+        delete *model;
+    } catch (...) {
+    }
+    *model = NULL;
+}
+
+const char *cad_model_unit(const cad_model *model) { return model ? model->unit : "unknown"; }
+
+int cad_model_num_faces(const cad_model *model) { return model ? model->faces.Extent() : 0; }
+
+const char *cad_model_face_surface(const cad_model *model, int index)
+{
+    if (!model || index < 0 || index >= (int)model->surface.size()) return NULL;
+    return model->surface[(size_t)index].c_str();
+}
+
+int cad_model_default_face(const cad_model *model, const char **note)
+{
+    if (note) *note = NULL;
+    if (!model) return 0;
+    if (note && !model->note.empty()) *note = model->note.c_str();
+    return model->default_face;
+}
+
+} // extern "C"

@@ -1,0 +1,27 @@
+#!/bin/sh
+# Install exactly the Debian 12 packages semquad needs to build, test and draw.
+# Idempotent: quiet when everything is present; runs apt-get update only when
+# something is missing.
+set -eu
+PKGS="meson ninja-build pkg-config gcc g++ \
+libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev \
+libocct-data-exchange-dev \
+libcgal-dev libgmp-dev libmpfr-dev \
+libgsl-dev liblapacke-dev libopenblas-dev libsuitesparse-dev \
+librsvg2-bin"
+missing=""
+for p in $PKGS; do
+    if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
+        missing="$missing $p"
+    fi
+done
+[ -z "$missing" ] && exit 0
+if [ "$(id -u)" -ne 0 ]; then
+    echo "bootstrap: missing packages:$missing (run as root to install)" >&2
+    exit 1
+fi
+echo "bootstrap: installing$missing" >&2
+export DEBIAN_FRONTEND=noninteractive
+apt-get update -qq >/dev/null
+# shellcheck disable=SC2086
+apt-get install -y -qq --no-install-recommends $missing >/dev/null

@@ -1,0 +1,55 @@
+#include "cli.h"
+
+#include <errno.h>
+#include <math.h>
+#include <stdlib.h>
+
+sq_status sq_cli_int(const char *opt, const char *val, int lo, int hi, int *out, sq_error *err)
+{
+    char *end;
+    errno = 0;
+    long v = strtol(val, &end, 10);
+    if (errno || end == val || *end || v < lo || v > hi)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "%s expects an integer in %d..%d, got '%s'", opt, lo, hi,
+                       val);
+    *out = (int)v;
+    return SQ_OK;
+}
+
+sq_status sq_cli_double(const char *opt, const char *val, double lo, double hi, double *out,
+                        sq_error *err)
+{
+    char *end;
+    errno = 0;
+    double v = strtod(val, &end);
+    if (errno || end == val || *end || !isfinite(v) || v < lo || v > hi)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "%s expects a number in [%g, %g], got '%s'", opt, lo, hi,
+                       val);
+    *out = v;
+    return SQ_OK;
+}
+
+sq_status sq_cli_value(int argc, char **argv, int *i, const char **val, sq_error *err)
+{
+    if (*i + 1 >= argc) return SQ_FAIL(err, SQ_ERR_USAGE, "option %s needs a value", argv[*i]);
+    *val = argv[++*i];
+    return SQ_OK;
+}
+
+sq_status sq_cli_open_face(const char *path, int face, cad_model **model, cad_face **cface,
+                           int *face_index, const char **note, sq_error *err)
+{
+    *note = NULL;
+    SQ_TRY(cad_model_read(path, model, err));
+    int n = cad_model_num_faces(*model);
+    if (face < 0) face = cad_model_default_face(*model, note);
+    if (face >= n) {
+        cad_model_free(model);
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--face %d: %s has %d face%s (0..%d)", face, path, n,
+                       n == 1 ? "" : "s", n - 1);
+    }
+    *face_index = face;
+    sq_status st = cad_face_create(*model, face, cface, err);
+    if (st != SQ_OK) cad_model_free(model);
+    return st;
+}

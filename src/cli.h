@@ -1,0 +1,25 @@
+/* semquad — helpers shared by the subcommands of the `semquad` program. */
+#ifndef SQ_CLI_H
+#define SQ_CLI_H
+
+#include "cad.h"
+
+/* Parse a whole-string integer/real option value; SQ_ERR_USAGE naming the
+ * option otherwise. */
+sq_status sq_cli_int(const char *opt, const char *val, int lo, int hi, int *out, sq_error *err);
+sq_status sq_cli_double(const char *opt, const char *val, double lo, double hi, double *out,
+                        sq_error *err);
+
+/* Value of option argv[*i] (advances *i); SQ_ERR_USAGE if missing. */
+sq_status sq_cli_value(int argc, char **argv, int *i, const char **val, sq_error *err);
+
+/* Read `path` and open face `face` (-1: the default face; *note set when
+ * the choice needs saying).  On success the caller frees both. */
+sq_status sq_cli_open_face(const char *path, int face, cad_model **model, cad_face **cface,
+                           int *face_index, const char **note, sq_error *err);
+
+/* Subcommands: return an sq_status, print errors through err. */
+sq_status sq_cmd_info(int argc, char **argv, sq_error *err);
+sq_status sq_cmd_triangulate(int argc, char **argv, sq_error *err);
+
+#endif

@@ -1,0 +1,168 @@
+/* semquad info FILE [--face N] [--json]: what a CAD file holds. */
+#include "cli.h"
+#include "face_info.h"
+#include "json_writer.h"
+
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+typedef struct {
+    int index;
+    const char *surface;
+    cad_face *face; /* NULL for a non-planar face */
+    sq_face_info info;
+} face_entry;
+
+static void print_text(const char *path, const cad_model *m, const face_entry *f, int nf)
+{
+    int total = cad_model_num_faces(m);
+    printf("%s: %d face%s, unit %s\n", path, total, total == 1 ? "" : "s", cad_model_unit(m));
+    for (int k = 0; k < nf; k++) {
+        printf("face %d: %s", f[k].index, f[k].surface);
+        if (!f[k].face) {
+            printf(" (not supported: semquad meshes planar faces)\n");
+            continue;
+        }
+        const sq_face_info *in = &f[k].info;
+        printf(", area %.10g, chi %d, bbox [%g, %g] x [%g, %g]\n", in->area, in->chi, in->bbox[0],
+               in->bbox[2], in->bbox[1], in->bbox[3]);
+        for (int l = 0; l < in->nloops; l++) {
+            int first = cad_face_loop_first_edge(f[k].face, l);
+            int n = cad_face_loop_num_edges(f[k].face, l);
+            printf("  loop %d (%s): %d edge%s\n", l, l ? "hole" : "outer", n, n == 1 ? "" : "s");
+            for (int e = first; e < first + n; e++)
+                printf("    edge %d: %s, length %.10g\n", e,
+                       cad_edge_type_name(cad_face_edge_type(f[k].face, e)),
+                       cad_face_edge_length(f[k].face, e));
+        }
+        printf("  corners: %d\n", in->ncorners);
+        for (int v = 0; v < in->nvertices; v++) {
+            const sq_vertex *x = &in->vertices[v];
+            printf("    (%.10g, %.10g) loop %d: %s%.4f deg\n", x->x, x->y, x->loop,
+                   x->smooth ? "smooth junction, " : "", x->angle_deg);
+        }
+    }
+}
+
+static void print_json(const char *path, const cad_model *m, const face_entry *f, int nf)
+{
+    sq_json j;
+    sq_json_init(&j, stdout);
+    sq_json_begin_object(&j);
+    sq_json_key(&j, "input");
+    sq_json_string(&j, path);
+    sq_json_key(&j, "unit");
+    sq_json_string(&j, cad_model_unit(m));
+    sq_json_key(&j, "faces");
+    sq_json_begin_array(&j);
+    for (int k = 0; k < nf; k++) {
+        sq_json_begin_object(&j);
+        sq_json_key(&j, "index");
+        sq_json_int(&j, f[k].index);
+        sq_json_key(&j, "surface");
+        sq_json_string(&j, f[k].surface);
+        if (f[k].face) {
+            const sq_face_info *in = &f[k].info;
+            sq_json_key(&j, "chi");
+            sq_json_int(&j, in->chi);
+            sq_json_key(&j, "area");
+            sq_json_number(&j, in->area);
+            sq_json_key(&j, "bbox");
+            sq_json_begin_array(&j);
+            for (int c = 0; c < 4; c++) sq_json_number(&j, in->bbox[c]);
+            sq_json_end_array(&j);
+            sq_json_key(&j, "loops");
+            sq_json_begin_array(&j);
+            for (int l = 0; l < in->nloops; l++) {
+                int first = cad_face_loop_first_edge(f[k].face, l);
+                int n = cad_face_loop_num_edges(f[k].face, l);
+                sq_json_begin_object(&j);
+                sq_json_key(&j, "hole");
+                sq_json_bool(&j, l > 0);
+                sq_json_key(&j, "edges");
+                sq_json_begin_array(&j);
+                for (int e = first; e < first + n; e++) {
+                    sq_json_begin_object(&j);
+                    sq_json_key(&j, "type");
+                    sq_json_string(&j, cad_edge_type_name(cad_face_edge_type(f[k].face, e)));
+                    sq_json_key(&j, "length");
+                    sq_json_number(&j, cad_face_edge_length(f[k].face, e));
+                    sq_json_end_object(&j);
+                }
+                sq_json_end_array(&j);
+                sq_json_end_object(&j);
+            }
+            sq_json_end_array(&j);
+            for (int pass = 0; pass < 2; pass++) {
+                sq_json_key(&j, pass ? "smooth_junctions" : "corners");
+                sq_json_begin_array(&j);
+                for (int v = 0; v < in->nvertices; v++) {
+                    const sq_vertex *x = &in->vertices[v];
+                    if (x->smooth != pass) continue;
+                    sq_json_begin_object(&j);
+                    sq_json_key(&j, "x");
+                    sq_json_number(&j, x->x);
+                    sq_json_key(&j, "y");
+                    sq_json_number(&j, x->y);
+                    sq_json_key(&j, "angle_deg");
+                    sq_json_number(&j, x->angle_deg);
+                    sq_json_key(&j, "loop");
+                    sq_json_int(&j, x->loop);
+                    sq_json_end_object(&j);
+                }
+                sq_json_end_array(&j);
+            }
+        }
+        sq_json_end_object(&j);
+    }
+    sq_json_end_array(&j);
+    sq_json_end_object(&j);
+}
+
+sq_status sq_cmd_info(int argc, char **argv, sq_error *err)
+{
+    const char *path = NULL, *val;
+    int face = -1, json = 0;
+    for (int i = 0; i < argc; i++) {
+        if (!strcmp(argv[i], "--json")) json = 1;
+        else if (!strcmp(argv[i], "--face")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            SQ_TRY(sq_cli_int("--face", val, 0, 1000000, &face, err));
+        } else if (argv[i][0] == '-' && argv[i][1]) {
+            return SQ_FAIL(err, SQ_ERR_USAGE, "info: unknown option %s", argv[i]);
+        } else if (!path) path = argv[i];
+        else return SQ_FAIL(err, SQ_ERR_USAGE, "info: one input file expected");
+    }
+    if (!path) return SQ_FAIL(err, SQ_ERR_USAGE, "info: missing input file");
+    cad_model *m = NULL;
+    SQ_TRY(cad_model_read(path, &m, err));
+    int total = cad_model_num_faces(m);
+    if (face >= total) {
+        cad_model_free(&m);
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--face %d: %s has %d face%s", face, path, total,
+                       total == 1 ? "" : "s");
+    }
+    int first = face < 0 ? 0 : face, nf = face < 0 ? total : 1;
+    face_entry *f = calloc((size_t)nf, sizeof *f);
+    sq_status st = f ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < nf && st == SQ_OK; k++) {
+        f[k].index = first + k;
+        f[k].surface = cad_model_face_surface(m, first + k);
+        if (strcmp(f[k].surface, "plane")) continue;
+        st = cad_face_create(m, first + k, &f[k].face, err);
+        if (st == SQ_OK) st = sq_face_info_compute(f[k].face, &f[k].info, err);
+    }
+    if (st == SQ_OK) {
+        if (json) print_json(path, m, f, nf);
+        else print_text(path, m, f, nf);
+        if (fflush(stdout) != 0) st = SQ_FAIL(err, SQ_ERR_OUTPUT, "cannot write to standard output");
+    }
+    for (int k = 0; f && k < nf; k++) {
+        sq_face_info_free(&f[k].info);
+        cad_face_free(&f[k].face);
+    }
+    free(f);
+    cad_model_free(&m);
+    return st;
+}

@@ -1,0 +1,43 @@
+/* semquad — what a planar face is: corners, area, Euler characteristic.
+ *
+ * Built on the cad/ evaluation API only (no OpenCASCADE types).  Area by
+ * Green's theorem along the exact boundary curves, so it does not depend on
+ * any triangulation (OpenCASCADE's own mass properties are off by up to 1 %
+ * on B-spline faces, ../shared/geometries/README.md).
+ *
+ * GSL reports through its error handler: programs using this layer call
+ * gsl_set_error_handler_off() once at start-up so that failures come back
+ * as status codes instead of aborting. */
+#ifndef SQ_FACE_INFO_H
+#define SQ_FACE_INFO_H
+
+#include "cad.h"
+
+/* Vertices whose turning angle is below this are smooth junctions, not
+ * corners (degrees). */
+#define SQ_SMOOTH_TOL_DEG 0.5
+
+typedef struct {
+    double x, y;
+    double angle_deg; /* interior angle seen from the face, in (0, 360) */
+    int loop;
+    int edge_in, edge_out; /* edge ending here, edge starting here */
+    int smooth;            /* 1: smooth junction (|180 - angle| < tol) */
+} sq_vertex;
+
+typedef struct {
+    int nloops, nholes, chi; /* chi = 1 - holes */
+    double area;
+    double bbox[4]; /* xmin, ymin, xmax, ymax of the boundary */
+    int nvertices;
+    sq_vertex *vertices; /* every junction of two edges, loop by loop */
+    int ncorners;        /* vertices that are not smooth */
+} sq_face_info;
+
+sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_error *err);
+void sq_face_info_free(sq_face_info *info); /* frees arrays, zeroes the struct */
+
+/* Total absolute turning of an edge, integral of |curvature| ds (radians). */
+sq_status sq_edge_turning(const cad_face *face, int edge, double *turning, sq_error *err);
+
+#endif

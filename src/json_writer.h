@@ -1,0 +1,28 @@
+/* semquad — a small streaming JSON writer (commas and nesting handled). */
+#ifndef SQ_JSON_WRITER_H
+#define SQ_JSON_WRITER_H
+
+#include <stdio.h>
+
+#define SQ_JSON_MAX_DEPTH 16
+
+typedef struct {
+    FILE *fp;
+    int depth;
+    int count[SQ_JSON_MAX_DEPTH]; /* items written at each level */
+    int after_key;
+} sq_json;
+
+void sq_json_init(sq_json *j, FILE *fp);
+void sq_json_begin_object(sq_json *j);
+void sq_json_end_object(sq_json *j);
+void sq_json_begin_array(sq_json *j);
+void sq_json_end_array(sq_json *j);
+void sq_json_key(sq_json *j, const char *key);
+void sq_json_string(sq_json *j, const char *s);
+void sq_json_number(sq_json *j, double x); /* 15 significant digits; NaN/inf as null */
+void sq_json_int(sq_json *j, long x);
+void sq_json_bool(sq_json *j, int b);
+void sq_json_null(sq_json *j);
+
+#endif

@@ -1,0 +1,63 @@
+/* semquad — command-line entry: dispatch subcommands, map statuses to exit
+ * codes (../shared/DESIGN.md, "Exit statuses"), print errors as one line. */
+#include "cli.h"
+
+#include <gsl/gsl_errno.h>
+#include <stdio.h>
+#include <string.h>
+
+#ifndef SQ_VERSION
+#define SQ_VERSION "unknown"
+#endif
+
+static const char *usage =
+    "semquad " SQ_VERSION " - block-structured high-order quad meshes of planar CAD faces\n"
+    "\n"
+    "usage: semquad COMMAND [options]\n"
+    "\n"
+    "commands:\n"
+    "  info FILE [--face N] [--json]\n"
+    "      faces, boundary loops, edges (type, length), corners (angle), chi, area.\n"
+    "  triangulate FILE [--face N] [--order P] [--size H] [--min-angle A] [--max-turn T]\n"
+    "              [-o out.vtu] [--svg out.svg] [--report out.json] [--quiet]\n"
+    "      coarse curved triangulation of order P (1..12, default 4): CGAL constrained\n"
+    "      Delaunay refinement (min angle A, default 20 deg; longest edge H, default\n"
+    "      sqrt(area)/3), boundary segments turning at most T degrees (default 30),\n"
+    "      high-order nodes exactly on the CAD curves.\n"
+    "  help                 this text\n"
+    "  --version            the version\n"
+    "\n"
+    "FILE is STEP (.step/.stp), IGES (.iges/.igs) or BREP (.brep/.brp); lengths stay in\n"
+    "the file's unit. The default face is the only planar face (else face 0).\n"
+    "\n"
+    "exit status: 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 unsupported\n"
+    "geometry, 5 invalid singularity pattern, 6 no valid layout, 7 output not written.\n";
+
+int main(int argc, char **argv)
+{
+    sq_error err;
+    sq_error_clear(&err);
+    /* GSL failures must come back as status codes, not abort the program */
+    gsl_set_error_handler_off();
+    if (argc < 2) {
+        fputs(usage, stderr);
+        return SQ_ERR_USAGE;
+    }
+    const char *cmd = argv[1];
+    sq_status st;
+    if (!strcmp(cmd, "help") || !strcmp(cmd, "--help") || !strcmp(cmd, "-h")) {
+        fputs(usage, stdout);
+        return 0;
+    } else if (!strcmp(cmd, "--version") || !strcmp(cmd, "version")) {
+        printf("semquad %s\n", SQ_VERSION);
+        return 0;
+    } else if (!strcmp(cmd, "info")) {
+        st = sq_cmd_info(argc - 2, argv + 2, &err);
+    } else if (!strcmp(cmd, "triangulate")) {
+        st = sq_cmd_triangulate(argc - 2, argv + 2, &err);
+    } else {
+        st = SQ_FAIL(&err, SQ_ERR_USAGE, "unknown command '%s' (try: semquad help)", cmd);
+    }
+    if (st != SQ_OK) fprintf(stderr, "semquad: %s: %s\n", sq_status_name(st), err.msg);
+    return (int)st;
+}

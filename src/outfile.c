@@ -1,0 +1,63 @@
+#include "outfile.h"
+
+#include <errno.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+sq_status sq_outfile_open(const char *path, sq_outfile *out, sq_error *err)
+{
+    memset(out, 0, sizeof *out);
+    size_t n = strlen(path);
+    out->path = strdup(path);
+    out->tmp = malloc(n + 16);
+    if (!out->path || !out->tmp) {
+        sq_outfile_abort(out);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    /* same directory as the target, so the rename is atomic */
+    snprintf(out->tmp, n + 16, "%s.tmpXXXXXX", path);
+    int fd = mkstemp(out->tmp);
+    if (fd < 0) {
+        int e = errno;
+        free(out->tmp);
+        out->tmp = NULL;
+        sq_outfile_abort(out);
+        return SQ_FAIL(err, SQ_ERR_OUTPUT, "cannot write %s: %s", path, strerror(e));
+    }
+    out->fp = fdopen(fd, "w");
+    if (!out->fp) {
+        close(fd);
+        sq_outfile_abort(out);
+        return SQ_FAIL(err, SQ_ERR_OUTPUT, "cannot write %s", path);
+    }
+    return SQ_OK;
+}
+
+sq_status sq_outfile_commit(sq_outfile *out, sq_error *err)
+{
+    int bad = ferror(out->fp) != 0;
+    bad |= fclose(out->fp) != 0;
+    out->fp = NULL;
+    if (!bad && rename(out->tmp, out->path) == 0) {
+        free(out->tmp);
+        out->tmp = NULL;
+        free(out->path);
+        out->path = NULL;
+        return SQ_OK;
+    }
+    int e = errno;
+    sq_status st = SQ_FAIL(err, SQ_ERR_OUTPUT, "cannot write %s: %s", out->path, strerror(e));
+    sq_outfile_abort(out);
+    return st;
+}
+
+void sq_outfile_abort(sq_outfile *out)
+{
+    if (!out) return;
+    if (out->fp) fclose(out->fp);
+    if (out->tmp) remove(out->tmp);
+    free(out->tmp);
+    free(out->path);
+    memset(out, 0, sizeof *out);
+}

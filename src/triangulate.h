@@ -1,0 +1,51 @@
+/* semquad — coarse curved triangulation of a planar face.
+ *
+ * design:
+ *  1. discretize each boundary edge, equidistributing
+ *     rho(s) = 1/size + |curvature(s)|/max_turn (every segment turns by at
+ *     most max_turn, and is at most `size` long), points exactly on the curve;
+ *  2. CGAL constrained Delaunay refinement (min angle, size, graded size
+ *     around the extra points) of that polygon;
+ *  3. where the refinement split a boundary segment, put the split point on
+ *     the curve (by arc length) into the discretization and redo 2, so every
+ *     boundary vertex lies on the CAD curve;
+ *  4. raise to order P: nodes of boundary edges at Gauss–Lobatto–Legendre
+ *     arc-length positions on the curve, interior nodes by blending the edge
+ *     displacements into the element (Szabó & Babuška's blending map), and
+ *     check every element's scaled Jacobian. */
+#ifndef SQ_TRIANGULATE_H
+#define SQ_TRIANGULATE_H
+
+#include "cad.h"
+#include "tri_mesh.h"
+
+typedef struct {
+    int order;            /* P, 1..12 */
+    double size;          /* longest edge; <= 0: automatic (sqrt(area)/3) */
+    double min_angle_deg; /* CGAL's angle bound, default 20 */
+    double max_turn_deg;  /* largest boundary turning per segment, default 30 */
+    int nextra;           /* points to insert as vertices, 2*nextra in extra_xy */
+    const double *extra_xy;
+    double extra_size;    /* size at the extra points (<= 0: size/8); grows
+                             with distance at rate 1/2 up to size */
+} sq_tri_options;
+
+void sq_tri_options_default(sq_tri_options *opt);
+
+typedef struct {
+    sem_tri_mesh *mesh;  /* btag = CAD edge index of boundary element edges */
+    double *bs;          /* 6*ntris: arc lengths (start, end) of each element
+                            edge on its CAD edge, along the edge's direction;
+                            unused (0) for interior edges */
+    double *jac;         /* ntris: scaled Jacobian of each element */
+    double size;         /* size bound used */
+    double min_angle_deg;       /* smallest angle of the straight triangles */
+    double min_scaled_jacobian; /* over all elements */
+    double area;                /* sum over elements of the integral of det J */
+} sq_triangulation;
+
+sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_triangulation *out,
+                         sq_error *err);
+void sq_triangulation_free(sq_triangulation *tri); /* frees, zeroes the struct */
+
+#endif
