@@ -6,8 +6,10 @@
  *
  * Frames and orientation (../shared/DESIGN.md, "Conventions"): a planar face
  * is described in a 2D frame (origin O, axes X, Y) of its plane chosen so that
- * the face normal is +Z = X x Y.  When the face normal is parallel to the
- * global z axis, X is the global x axis, so coordinates read as in the file.
+ * the face normal is +Z = X x Y.  When the face lies in a plane z = const,
+ * X and Y are the global x and y axes and O is on the z axis, so coordinates
+ * read as in the file (even if the face's normal is -z: its loops are then
+ * walked in the opposite sense to keep the orientation below).
  * In that frame the outer loop runs counter-clockwise and holes clockwise:
  * the face is always on the left of the direction of travel.
  *

@@ -402,7 +402,7 @@ sq_status cad_face_create(const cad_model *model, int index, cad_face **out, sq_
         return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d: OpenCASCADE %s: %s", index,
                        e.DynamicType()->Name(), e.GetMessageString() ? e.GetMessageString() : "");
     }
-    SQCAD_CATCH(err)
+    SQCAD_CATCH_REST(err)
 }
 
 void cad_face_free(cad_face **face)

@@ -44,6 +44,10 @@ bool face_plane(const TopoDS_Face &face, gp_Pln *pln);
         return SQ_FAIL((err), SQ_ERR_INTERNAL, "OpenCASCADE: %s: %s", e_.DynamicType()->Name(),    \
                        e_.GetMessageString() ? e_.GetMessageString() : "");                        \
     }                                                                                              \
+    SQCAD_CATCH_REST(err)
+
+// The same without the Standard_Failure handler (write your own before it).
+#define SQCAD_CATCH_REST(err)                                                                      \
     catch (const std::bad_alloc &) {                                                               \
         return SQ_FAIL((err), SQ_ERR_INTERNAL, "out of memory");                                   \
     }                                                                                              \

@@ -7,7 +7,6 @@
  * eigenvector-based weight loses. */
 #include "gauss.h"
 
-#include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <math.h>
 #include <stdlib.h>
@@ -53,11 +52,12 @@ sq_status sem_gauss_jacobi(int n, double alpha, double beta, double *x, double *
         return SQ_FAIL(err, SQ_ERR_USAGE, "gauss_jacobi: bad arguments n=%d alpha=%g beta=%g", n,
                        alpha, beta);
 
-    /* GSL's weight on [a,b] is (b-x)^alpha (x-a)^beta: with a=-1, b=1 it is ours. */
-    gsl_error_handler_t *old = gsl_set_error_handler_off();
+    /* GSL's weight on [a,b] is (b-x)^alpha (x-a)^beta: with a=-1, b=1 it is
+     * ours.  The arguments are checked above, so GSL's error handler (a
+     * process-wide setting we leave to the application) can only be reached
+     * if memory runs out. */
     gsl_integration_fixed_workspace *ws =
         gsl_integration_fixed_alloc(gsl_integration_fixed_jacobi, (size_t)n, -1.0, 1.0, alpha, beta);
-    gsl_set_error_handler(old);
     if (!ws)
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "gauss_jacobi: GSL failed for n=%d alpha=%g beta=%g", n,
                        alpha, beta);
@@ -87,9 +87,9 @@ sq_status sem_gauss_jacobi(int n, double alpha, double beta, double *x, double *
     if (n % 2 == 1 && alpha == beta) x[n / 2] = 0.0;
 
     /* w_i = 2^{a+b+1} G(n+a+1) G(n+b+1) / (n! G(n+a+b+1)) / ((1-x_i^2) P_n'(x_i)^2)
-     * (Karniadakis & Sherwin 2005, Appendix B). */
-    /* The Gamma ratio by a product of n ratios (one rounding each) rather
-     * than exp of a sum of lgamma's, whose cancellation costs ~1e-14. */
+     * (Karniadakis & Sherwin 2005, Appendix B).  The Gamma ratio is built as
+     * a product of n ratios (one rounding each) rather than exp of a sum of
+     * lgamma's, whose cancellation costs ~1e-14. */
     double c = exp2(alpha + beta + 1.0) * tgamma(alpha + 2.0) * tgamma(beta + 2.0) / tgamma(alpha + beta + 2.0);
     for (int k = 1; k < n; ++k)
         c *= (k + alpha + 1.0) * (k + beta + 1.0) / ((k + 1.0) * (k + alpha + beta + 1.0));

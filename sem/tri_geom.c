@@ -13,12 +13,14 @@
 #include <stdlib.h>
 
 #define SEM_MAX_NODES ((SEM_MAX_ORDER + 1) * (SEM_MAX_ORDER + 2) / 2)
+#define SEM_MAX_SAMPLES (SEM_MAX_NODES + (SEM_MAX_ORDER + 1) * (SEM_MAX_ORDER + 1))
 
 struct sem_tri_geom_sampler {
     int nn;      /* Lagrange nodes */
     int npts;    /* sample points */
-    double *dlr; /* npts*nn: dl_n/dr at point p, row p */
-    double *dls; /* npts*nn: dl_n/ds */
+    double *dlr; /* nn*npts: dl_n/dr at point p, row n (node-major so the
+                    per-element sums are axpy's over points, which vectorise) */
+    double *dls; /* nn*npts: dl_n/ds */
 };
 
 double sem_tri_geom_map(const sem_tri_lagrange *lag, const double *gxy, double r, double s,
@@ -77,10 +79,14 @@ sq_status sem_tri_geom_sampler_create(const sem_tri_lagrange *lag, sem_tri_geom_
         sem_tri_geom_sampler_free(&S);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "tri_geom_sampler_create: out of memory");
     }
+    double lr[SEM_MAX_NODES], ls[SEM_MAX_NODES];
     for (int p = 0; p < S->npts; ++p) {
         const double *rs = p < nn ? nodes + 2 * p : q->rs + 2 * (p - nn);
-        sem_tri_lagrange_eval(lag, rs[0], rs[1], NULL, S->dlr + (size_t)p * nn,
-                              S->dls + (size_t)p * nn);
+        sem_tri_lagrange_eval(lag, rs[0], rs[1], NULL, lr, ls);
+        for (int k = 0; k < nn; ++k) {
+            S->dlr[(size_t)k * S->npts + p] = lr[k];
+            S->dls[(size_t)k * S->npts + p] = ls[k];
+        }
     }
     sem_tri_quad_free(&q);
     *out = S;
@@ -98,19 +104,23 @@ void sem_tri_geom_sampler_free(sem_tri_geom_sampler **s)
 
 double sem_tri_geom_sampler_scaled_jacobian(const sem_tri_geom_sampler *S, const double *gxy)
 {
-    double jmin = HUGE_VAL, jmax = -HUGE_VAL;
-    const int nn = S->nn;
-    for (int p = 0; p < S->npts; ++p) {
-        const double *lr = S->dlr + (size_t)p * nn, *ls = S->dls + (size_t)p * nn;
-        double xr = 0.0, xs = 0.0, yr = 0.0, ys = 0.0;
-        for (int k = 0; k < nn; ++k) {
-            const double gx = gxy[2 * k], gy = gxy[2 * k + 1];
-            xr += gx * lr[k];
-            xs += gx * ls[k];
-            yr += gy * lr[k];
-            ys += gy * ls[k];
+    /* At most SEM_MAX_NODES nodes plus (SEM_MAX_ORDER+1)^2 rule points. */
+    double xr[SEM_MAX_SAMPLES], xs[SEM_MAX_SAMPLES], yr[SEM_MAX_SAMPLES], ys[SEM_MAX_SAMPLES];
+    const int nn = S->nn, np = S->npts;
+    for (int p = 0; p < np; ++p) xr[p] = xs[p] = yr[p] = ys[p] = 0.0;
+    for (int k = 0; k < nn; ++k) {
+        const double gx = gxy[2 * k], gy = gxy[2 * k + 1];
+        const double *restrict lr = S->dlr + (size_t)k * np, *restrict ls = S->dls + (size_t)k * np;
+        for (int p = 0; p < np; ++p) {
+            xr[p] += gx * lr[p];
+            xs[p] += gx * ls[p];
+            yr[p] += gy * lr[p];
+            ys[p] += gy * ls[p];
         }
-        const double d = xr * ys - xs * yr;
+    }
+    double jmin = HUGE_VAL, jmax = -HUGE_VAL;
+    for (int p = 0; p < np; ++p) {
+        const double d = xr[p] * ys[p] - xs[p] * yr[p];
         if (isnan(d)) return NAN; /* non-finite geometry nodes */
         if (d < jmin) jmin = d;
         if (d > jmax) jmax = d;
