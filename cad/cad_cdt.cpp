@@ -22,7 +22,6 @@
 #include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_2/Face_badness.h>
-#include <CGAL/Triangulation_vertex_base_with_info_2.h>
 
 #include <algorithm>
 #include <cmath>
@@ -35,8 +34,7 @@
 namespace {
 
 typedef CGAL::Exact_predicates_inexact_constructions_kernel K;
-typedef CGAL::Delaunay_mesh_vertex_base_2<K> Vbb;
-typedef CGAL::Triangulation_vertex_base_with_info_2<int, K, Vbb> Vb;
+typedef CGAL::Delaunay_mesh_vertex_base_2<K> Vb;
 typedef CGAL::Delaunay_mesh_face_base_2<K> Fb;
 typedef CGAL::Triangulation_data_structure_2<Vb, Fb> Tds;
 typedef CGAL::Constrained_Delaunay_triangulation_2<K, Tds> CDT;
@@ -151,12 +149,12 @@ sq_status cdt_mesh(const cad_cdt_input *in, cad_cdt_output *out, sq_error *err)
 
     CDT cdt;
     std::vector<Vertex_handle> vh((size_t)np);
+    // Input vertices and the first input index of each (duplicates share one).
+    std::unordered_map<const void *, int> input_index;
     for (int i = 0; i < np; ++i) {
         vh[(size_t)i] = cdt.insert(Point(in->xy[2 * i], in->xy[2 * i + 1]));
-        if (vh[(size_t)i]->info() < 0 || vh[(size_t)i]->info() > i) vh[(size_t)i]->info() = i;
+        input_index.emplace(&*vh[(size_t)i], i);
     }
-    // Vertices created by the insertion default to info 0: make sure only input
-    // points carry an index (Steiner points get -1 below, when listed).
     int nseg_used = 0;
     try {
         for (int k = 0; k < ns; ++k) {
@@ -173,10 +171,6 @@ sq_status cdt_mesh(const cad_cdt_input *in, cad_cdt_output *out, sq_error *err)
     }
     if (nseg_used < 3 || cdt.dimension() < 2)
         return SQ_FAIL(err, SQ_ERR_GEOMETRY, "cad_cdt_mesh: the segments bound no area");
-
-    // Mark the input vertices; every vertex inserted later is a Steiner point.
-    std::unordered_map<const void *, int> input_index;
-    for (int i = 0; i < np; ++i) input_index.emplace(&*vh[(size_t)i], vh[(size_t)i]->info());
 
     double sine2 = 0;
     if (in->min_angle_deg > 0) {

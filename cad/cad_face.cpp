@@ -15,7 +15,9 @@
 //  4. orientation: signed area by Green's theorem; if the outer loop is
 //     negative, it is reversed (plane z = const, normal -z) or the frame is
 //     mirrored (Y -> -Y, other planes); a positive hole is reversed;
-//  5. checks: each edge ends where the next one starts.
+//  5. checks: each edge ends where the next one starts (within tolerance);
+//     the junction point (the shared vertex's point, else the mid-point of
+//     the two curve ends) is then returned exactly at s = 0 and s = length.
 #include "cad_private.hxx"
 
 #include <BRepAdaptor_Curve.hxx>
@@ -25,7 +27,9 @@
 #include <Extrema_ExtPC.hxx>
 #include <Extrema_POnCurv.hxx>
 #include <TColStd_Array1OfReal.hxx>
+#include <TopExp.hxx>
 #include <TopoDS.hxx>
+#include <TopoDS_Vertex.hxx>
 #include <TopoDS_Edge.hxx>
 #include <TopoDS_Iterator.hxx>
 #include <TopoDS_Wire.hxx>
@@ -56,6 +60,8 @@ struct Edge {
     int loop = 0;
     std::vector<double> tu; // table: parameters, increasing, tu[0] = u0, back = u1
     std::vector<double> ts; // forward arc length at tu
+    double start[2] = {0, 0}, end[2] = {0, 0}; // 2D end points in the direction of travel,
+                                               // shared exactly with the neighbouring edges
 };
 
 double speed(const Edge &e, double u)
@@ -366,6 +372,27 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
                                index, l, n0 + k, gap, n0 + (k + 1) % cnt);
         }
     }
+    // Shared corners: each junction gets the mid-point of the two curve ends,
+    // so that an edge ends exactly where the next one starts.
+    for (int l = 0; l < nl; ++l) {
+        int n0 = f->loop_first[(size_t)l], cnt = f->loop_n[(size_t)l];
+        for (int k = 0; k < cnt; ++k) {
+            Edge &a = f->edges[(size_t)(n0 + k)], &b = f->edges[(size_t)(n0 + (k + 1) % cnt)];
+            gp_Pnt ea = f->end3d(a), sb = f->start3d(b);
+            // The topological vertex (the file's point) if both curve ends are
+            // close to it, else the mid-point of the two ends.
+            TopoDS_Edge fa = TopoDS::Edge(a.edge.Oriented(TopAbs_FORWARD));
+            TopoDS_Vertex v = a.reversed ? TopExp::FirstVertex(fa) : TopExp::LastVertex(fa);
+            gp_Pnt j(0.5 * (ea.XYZ() + sb.XYZ()));
+            if (!v.IsNull()) {
+                gp_Pnt pv = BRep_Tool::Pnt(v);
+                if (pv.Distance(ea) <= gap_tol && pv.Distance(sb) <= gap_tol) j = pv;
+            }
+            double pj[2];
+            f->to2d(j, pj);
+            for (int d = 0; d < 2; ++d) a.end[d] = b.start[d] = pj[d];
+        }
+    }
     *out = f.release();
     return SQ_OK;
 }
@@ -474,6 +501,8 @@ sq_status cad_face_edge_eval(const cad_face *face, int edge, double s, double xy
         s = std::min(e.length, std::max(0.0, s));
         double sf = e.reversed ? e.length - s : s;
         face->eval_u(e, u_of_s(e, sf), xy, tangent, curvature);
+        if (xy && s == 0) xy[0] = e.start[0], xy[1] = e.start[1];
+        if (xy && s == e.length) xy[0] = e.end[0], xy[1] = e.end[1];
         return SQ_OK;
     }
     SQCAD_CATCH(err)
@@ -515,8 +544,13 @@ sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2
             if (step <= 1e-16 * std::max(1.0, std::fabs(u))) break;
         }
         double sf = s_of_u(e, best_u);
-        if (s) *s = std::min(e.length, std::max(0.0, e.reversed ? e.length - sf : sf));
-        if (foot) face->eval_u(e, best_u, foot, NULL, NULL);
+        double st = std::min(e.length, std::max(0.0, e.reversed ? e.length - sf : sf));
+        if (s) *s = st;
+        if (foot) {
+            face->eval_u(e, best_u, foot, NULL, NULL);
+            if (st == 0) foot[0] = e.start[0], foot[1] = e.start[1];
+            if (st == e.length) foot[0] = e.end[0], foot[1] = e.end[1];
+        }
         if (dist) *dist = std::sqrt(best_d2);
         return SQ_OK;
     }

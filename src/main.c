@@ -40,7 +40,7 @@ int main(int argc, char **argv)
     /* GSL failures must come back as status codes, not abort the program */
     gsl_set_error_handler_off();
     if (argc < 2) {
-        fputs(usage, stderr);
+        fputs("semquad: usage error: missing command (try: semquad help)\n", stderr);
         return SQ_ERR_USAGE;
     }
     const char *cmd = argv[1];

@@ -45,6 +45,7 @@ sq_status sq_tri_curve(const cad_face *face, sem_tri_mesh *mesh, const double *b
 {
     int P = mesh->order, nn = mesh->nodes_per_tri;
     sem_tri_lagrange *lag = NULL;
+    sem_tri_geom_sampler *sampler = NULL;
     double *rs = malloc(sizeof(double) * 2 * (size_t)nn);
     double *xi = malloc(sizeof(double) * (size_t)(P + 1));
     double *w = malloc(sizeof(double) * (size_t)(P + 1));
@@ -58,6 +59,7 @@ sq_status sq_tri_curve(const cad_face *face, sem_tri_mesh *mesh, const double *b
     if ((st = sem_tri_nodes(P, rs, err)) != SQ_OK) goto done;
     if (P >= 1 && (st = sem_gauss_lobatto(P + 1, xi, w, err)) != SQ_OK) goto done;
     if ((st = sem_tri_lagrange_create(P, &lag, err)) != SQ_OK) goto done;
+    if ((st = sem_tri_geom_sampler_create(lag, &sampler, err)) != SQ_OK) goto done;
 
     for (int e = 0; e < mesh->ntris && st == SQ_OK; e++) {
         const int *v = &mesh->tri[3 * e];
@@ -86,9 +88,10 @@ sq_status sq_tri_curve(const cad_face *face, sem_tri_mesh *mesh, const double *b
                 }
             }
         }
-        if (st == SQ_OK && jac_min) jac_min[e] = sem_tri_geom_scaled_jacobian(lag, g);
+        if (st == SQ_OK && jac_min) jac_min[e] = sem_tri_geom_sampler_scaled_jacobian(sampler, g);
     }
 done:
+    sem_tri_geom_sampler_free(&sampler);
     sem_tri_lagrange_free(&lag);
     free(rs);
     free(xi);

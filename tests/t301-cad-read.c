@@ -219,7 +219,7 @@ int main(void)
                                      "nautilus",  "polygon",       "quarter_circle", "square",
                                      "square_hole", "triangle",    "two_holes"};
     int nex = (int)(sizeof examples / sizeof examples[0]);
-    char results[16][256];
+    char results[16][1024];
     for (int i = 0; i < nex; ++i) {
         snprintf(path, sizeof path, "%s/%s.step", ex, examples[i]);
         sq_error err;

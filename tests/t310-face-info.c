@@ -88,6 +88,17 @@ static int check_case(const face_case *c)
     return fails ? 1 : 0;
 }
 
+/* Interior angle at vertex b of the counter-clockwise polygon.step
+ * (74.48, 123.69, 78.11, 123.21, 140.51 degrees as the README rounds them). */
+static double poly_angle(int a, int b, int c)
+{
+    static const double P[5][2] = {{0, 0}, {3, 0}, {4, 1.5}, {1.5, 2.5}, {0.5, 1.8}};
+    double ux = P[c][0] - P[b][0], uy = P[c][1] - P[b][1];
+    double wx = P[a][0] - P[b][0], wy = P[a][1] - P[b][1];
+    double ang = atan2(ux * wy - uy * wx, ux * wx + uy * wy) * 180.0 / PI;
+    return ang < 0 ? ang + 360.0 : ang;
+}
+
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -106,8 +117,9 @@ int main(void)
          {{1, 0, 90}, {3, 0, 90}, {4, 1, 90}, {4, 2, 90}, {0, 2, 90}, {0, 1, 90}}},
         {"nautilus.step", 0, -1, "mm", 5 * PI / 8, 1e-12, 1, 2, 1e-9, 3,
          {{-1, 0, 90}, {0, 0, 270}, {1, 0, 0}}},
-        {"polygon.step", 0, -1, "mm", 6.85, 1e-12, 1, 5, 0.006, 5,
-         {{0, 0, 74.48}, {3, 0, 123.69}, {4, 1.5, 78.11}, {1.5, 2.5, 123.21}, {0.5, 1.8, 140.51}}},
+        {"polygon.step", 0, -1, "mm", 6.85, 1e-12, 1, 5, 1e-9, 5,
+         {{0, 0, poly_angle(4, 0, 1)}, {3, 0, poly_angle(0, 1, 2)}, {4, 1.5, poly_angle(1, 2, 3)},
+          {1.5, 2.5, poly_angle(2, 3, 4)}, {0.5, 1.8, poly_angle(3, 4, 0)}}},
         {"naca0012.step", 0, -1, "mm", 20 - 0.081706, 1e-6, 2, 5, 0.1, 5,
          {{-2, -2, 90}, {3, -2, 90}, {3, 2, 90}, {-2, 2, 90}, {1, 0, 343.5}}},
         {"annulus.step", 0, -1, "mm", 0.84 * PI, 1e-12, 2, 0, 0, 0, {{0}}},

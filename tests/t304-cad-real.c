@@ -1,0 +1,217 @@
+/* t304 — real CAD files written by others (../shared/geometries/real):
+ * units kept (metres), areas, edges, holes, default face.  Skips (77) if
+ * SQ_REAL is not set or the folder is not readable. */
+#include "cad.h"
+
+#include <math.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+#include <unistd.h>
+
+static int failures = 0;
+
+#define CHECK(cond, ...)                                                                           \
+    do {                                                                                           \
+        if (!(cond)) {                                                                             \
+            fprintf(stderr, "%s:%d: ", __FILE__, __LINE__);                                        \
+            fprintf(stderr, __VA_ARGS__);                                                          \
+            fprintf(stderr, "\n");                                                                 \
+            ++failures;                                                                            \
+        }                                                                                          \
+    } while (0)
+
+#define NEAR(name, value, expected, tol)                                                           \
+    CHECK(fabs((value) - (expected)) <= (tol), "%s: value %.17g expected %.17g tolerance %.3g",    \
+          (name), (double)(value), (double)(expected), (double)(tol))
+
+static const double GX[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
+                             0.9061798459386640};
+static const double GW[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
+                             0.4786286704993665, 0.2369268850561891};
+
+static void eval(const cad_face *f, int e, double s, double p[2], double t[2], double *k)
+{
+    sq_error err;
+    if (cad_face_edge_eval(f, e, s, p, t, k, &err) != SQ_OK) {
+        fprintf(stderr, "eval: %s\n", err.msg);
+        exit(1);
+    }
+}
+
+/* Signed area of loop l, or of the face if l < 0. */
+static double green(const cad_face *f, int l, int panels)
+{
+    double a = 0;
+    for (int e = 0; e < cad_face_num_edges(f); ++e) {
+        if (l >= 0 && cad_face_edge_loop(f, e) != l) continue;
+        double L = cad_face_edge_length(f, e), h = L / panels;
+        for (int i = 0; i < panels; ++i)
+            for (int q = 0; q < 5; ++q) {
+                double s = (i + 0.5) * h + 0.5 * h * GX[q], p[2], t[2];
+                eval(f, e, s, p, t, NULL);
+                a += 0.5 * GW[q] * 0.5 * h * (p[0] * t[1] - p[1] * t[0]);
+            }
+    }
+    return a;
+}
+
+static void check_closed(const char *name, const cad_face *f, double tol)
+{
+    for (int l = 0; l < cad_face_num_loops(f); ++l) {
+        int first = cad_face_loop_first_edge(f, l), n = cad_face_loop_num_edges(f, l);
+        for (int k = 0; k < n; ++k) {
+            int e = first + k, nx = first + (k + 1) % n;
+            double a[2], b[2];
+            eval(f, e, cad_face_edge_length(f, e), a, NULL, NULL);
+            eval(f, nx, 0, b, NULL, NULL);
+            char what[200];
+            snprintf(what, sizeof what, "%s: gap between edges %d and %d", name, e, nx);
+            NEAR(what, hypot(a[0] - b[0], a[1] - b[1]), 0.0, tol);
+        }
+    }
+}
+
+/* Largest distance between two points of loop l (sampled). */
+static double loop_diameter(const cad_face *f, int l)
+{
+    enum { N = 400 };
+    static double pts[4 * N][2];
+    int np = 0;
+    for (int e = 0; e < cad_face_num_edges(f); ++e) {
+        if (cad_face_edge_loop(f, e) != l) continue;
+        for (int i = 0; i < N && np < 4 * N; ++i) eval(f, e, cad_face_edge_length(f, e) * i / N, pts[np++], NULL, NULL);
+    }
+    double d = 0;
+    for (int i = 0; i < np; ++i)
+        for (int j = i + 1; j < np; ++j) d = fmax(d, hypot(pts[i][0] - pts[j][0], pts[i][1] - pts[j][1]));
+    return d;
+}
+
+static cad_model *read_model(const char *dir, const char *file)
+{
+    char path[4096];
+    snprintf(path, sizeof path, "%s/%s", dir, file);
+    sq_error err;
+    cad_model *m = NULL;
+    if (cad_model_read(path, &m, &err) != SQ_OK) {
+        fprintf(stderr, "%s: %s\n", path, err.msg);
+        ++failures;
+    }
+    return m;
+}
+
+int main(void)
+{
+    const char *dir = getenv("SQ_REAL");
+    char probe[4096];
+    if (!dir) return 77;
+    snprintf(probe, sizeof probe, "%s/real_t106_cascade.step", dir);
+    if (access(probe, R_OK) != 0) return 77;
+    sq_error err;
+    cad_face *f = NULL;
+
+    /* T106 cascade: metres, 10 straight edges, a B-spline blade as the hole. */
+    cad_model *m = read_model(dir, "real_t106_cascade.step");
+    if (m) {
+        CHECK(!strcmp(cad_model_unit(m), "m"), "t106: unit %s, expected m", cad_model_unit(m));
+        CHECK(cad_model_num_faces(m) == 1, "t106: %d faces", cad_model_num_faces(m));
+        CHECK(cad_face_create(m, 0, &f, &err) == SQ_OK, "t106: %s", err.msg);
+    }
+    if (f) {
+        CHECK(cad_face_num_loops(f) == 2, "t106: %d loops, expected 2", cad_face_num_loops(f));
+        CHECK(cad_face_loop_num_edges(f, 0) == 10, "t106: %d outer edges, expected 10",
+              cad_face_loop_num_edges(f, 0));
+        for (int k = 0; k < cad_face_loop_num_edges(f, 0); ++k)
+            CHECK(cad_face_edge_type(f, k) == CAD_EDGE_LINE, "t106: outer edge %d is a %s", k,
+                  cad_edge_type_name(cad_face_edge_type(f, k)));
+        for (int k = 0; k < cad_face_loop_num_edges(f, 1); ++k) {
+            int e = cad_face_loop_first_edge(f, 1) + k;
+            CHECK(cad_face_edge_type(f, e) == CAD_EDGE_BSPLINE, "t106: hole edge %d is a %s", e,
+                  cad_edge_type_name(cad_face_edge_type(f, e)));
+        }
+        double o[3], x[3], y[3];
+        cad_face_frame(f, o, x, y);
+        NEAR("t106 frame: x axis", x[0], 1.0, 1e-15);
+        NEAR("t106 frame: y axis", y[1], 1.0, 1e-15);
+        NEAR("t106 area (m^2)", green(f, -1, 2000), 2.894541, 1e-5);
+        CHECK(green(f, 1, 2000) < 0, "t106: the hole must be clockwise");
+        NEAR("t106 chord (m)", loop_diameter(f, 1), 1.0, 0.01);
+        check_closed("t106", f, 1e-9);
+        cad_face_free(&f);
+    }
+    cad_model_free(&m);
+
+    /* Aerofoil box: metres, rectangle with a two-B-spline hole. */
+    m = read_model(dir, "real_aerofoil_box.step");
+    if (m) {
+        CHECK(!strcmp(cad_model_unit(m), "m"), "aerofoil: unit %s, expected m", cad_model_unit(m));
+        CHECK(cad_face_create(m, 0, &f, &err) == SQ_OK, "aerofoil: %s", err.msg);
+    }
+    if (f) {
+        CHECK(cad_face_num_loops(f) == 2 && cad_face_loop_num_edges(f, 0) == 4 &&
+                  cad_face_loop_num_edges(f, 1) == 2,
+              "aerofoil: loops %d, edges %d + %d, expected 2 loops 4 + 2", cad_face_num_loops(f),
+              cad_face_loop_num_edges(f, 0), cad_face_loop_num_edges(f, 1));
+        NEAR("aerofoil area (m^2)", green(f, -1, 2000), 2.989443, 1e-5);
+        double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+        for (int e = 0; e < 4; ++e) {
+            double p[2];
+            eval(f, e, 0, p, NULL, NULL);
+            for (int d = 0; d < 2; ++d) lo[d] = fmin(lo[d], p[d]), hi[d] = fmax(hi[d], p[d]);
+        }
+        NEAR("aerofoil box xmin", lo[0], -0.5, 1e-9);
+        NEAR("aerofoil box xmax", hi[0], 1.5, 1e-9);
+        NEAR("aerofoil box ymin", lo[1], -0.75, 1e-9);
+        NEAR("aerofoil box ymax", hi[1], 0.75, 1e-9);
+        NEAR("aerofoil chord (m)", loop_diameter(f, 1), 0.3124, 0.002);
+        check_closed("aerofoil", f, 1e-9);
+        cad_face_free(&f);
+    }
+    cad_model_free(&m);
+
+    /* Circle and square (FreeCAD, mm): two planar faces; face 1 is the square. */
+    m = read_model(dir, "real_circle_square.step");
+    if (m) {
+        const char *note = NULL;
+        CHECK(!strcmp(cad_model_unit(m), "mm"), "circle_square: unit %s", cad_model_unit(m));
+        CHECK(cad_model_num_faces(m) == 2, "circle_square: %d faces, expected 2", cad_model_num_faces(m));
+        CHECK(!strcmp(cad_model_face_surface(m, 0), "plane") && !strcmp(cad_model_face_surface(m, 1), "plane"),
+              "circle_square: both faces should be planes");
+        CHECK(cad_model_default_face(m, &note) == 0 && note && note[0],
+              "circle_square: two planar faces: default 0 with a note");
+        CHECK(cad_face_create(m, 0, &f, &err) == SQ_OK, "circle_square face 0: %s", err.msg);
+        if (f) {
+            CHECK(cad_face_num_loops(f) == 1, "circle_square face 0: %d loops", cad_face_num_loops(f));
+            NEAR("circle_square disc area (mm^2)", green(f, -1, 64), M_PI * 35 * 35, 1e-8);
+            cad_face_free(&f);
+        }
+        CHECK(cad_face_create(m, 1, &f, &err) == SQ_OK, "circle_square face 1: %s", err.msg);
+    }
+    if (f) {
+        CHECK(cad_face_num_loops(f) == 2 && cad_face_loop_num_edges(f, 0) == 4,
+              "circle_square face 1: %d loops, %d outer edges", cad_face_num_loops(f),
+              cad_face_loop_num_edges(f, 0));
+        for (int e = cad_face_loop_first_edge(f, 1); e < cad_face_num_edges(f); ++e) {
+            double k;
+            CHECK(cad_face_edge_type(f, e) == CAD_EDGE_CIRCLE, "circle_square hole edge %d: %s", e,
+                  cad_edge_type_name(cad_face_edge_type(f, e)));
+            eval(f, e, 0.5 * cad_face_edge_length(f, e), NULL, NULL, &k);
+            NEAR("circle_square hole curvature (1/mm)", k, -1.0 / 35, 1e-12);
+        }
+        NEAR("circle_square face 1 area (mm^2)", green(f, -1, 64), 6158.884, 1e-3);
+        double lo = HUGE_VAL, hi = -HUGE_VAL;
+        for (int e = 0; e < 4; ++e) {
+            double p[2];
+            eval(f, e, 0, p, NULL, NULL);
+            lo = fmin(lo, p[0]);
+            hi = fmax(hi, p[0]);
+        }
+        NEAR("circle_square xmin", lo, -50.14393, 1e-4);
+        NEAR("circle_square xmax", hi, 49.99620, 1e-4);
+        check_closed("circle_square", f, 1e-9);
+        cad_face_free(&f);
+    }
+    cad_model_free(&m);
+    return failures ? 1 : 0;
+}
