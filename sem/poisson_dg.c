@@ -189,6 +189,21 @@ static sq_status scatter(dg_state *S, const double *M, long r0, long c0, sq_erro
     return SQ_OK;
 }
 
+/* C = alpha A^T B + beta C for A, B of ne x nm (row-major), C nm x nm. */
+static void gemm_tn(int nm, int ne, double alpha, const double *A, const double *B, double beta,
+                    double *C)
+{
+    cblas_dgemm(CblasRowMajor, CblasTrans, CblasNoTrans, nm, nm, ne, alpha, A, nm, B, nm, beta, C,
+                nm);
+}
+
+/* out = diag(W) in (rows of ne x nm). */
+static void weigh(int ne, int nm, const double *W, const double *in, double *out)
+{
+    for (int p = 0; p < ne; ++p)
+        for (int m = 0; m < nm; ++m) out[(size_t)p * nm + m] = W[p] * in[(size_t)p * nm + m];
+}
+
 static sq_status dg_solve(void *state, const sem_poisson_data *data, sem_field *u, sq_error *err);
 
 static const sem_poisson_ops dg_ops = {dg_solve, dg_free, dg_ndofs};
@@ -229,6 +244,7 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
     sem_tri_lagrange *lag = NULL;
     sem_tri_quad *q = NULL;
     double *lq = NULL, *lrq = NULL, *lsq = NULL, *drq = NULL, *dsq = NULL, *B = NULL, *K = NULL;
+    double *KT = NULL; /* face work: one nm x nm product */
     double *area = NULL, *et = NULL, *ew = NULL;
     edge_tab E = {0};
     double *fa = NULL; /* face work */
@@ -253,9 +269,10 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
     S->vx = malloc(sizeof(double) * 3 * (size_t)nq * nt);
     B = malloc(sizeof(double) * 2 * (size_t)nq * nm);
     K = malloc(sizeof(double) * (size_t)nm * nm * 4);
+    KT = malloc(sizeof(double) * (size_t)nm * nm);
     area = malloc(sizeof(double) * (size_t)nt);
     S->rhs = malloc(sizeof(double) * (size_t)S->ndofs);
-    if (!S->phiq || !drq || !dsq || !lq || !lrq || !lsq || !S->vx || !B || !K || !area || !S->rhs) {
+    if (!S->phiq || !drq || !dsq || !lq || !lrq || !lsq || !S->vx || !B || !K || !KT || !area || !S->rhs) {
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_dg_create: out of memory (%ld unknowns)",
                      S->ndofs);
         goto fail;
@@ -305,7 +322,7 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
     E.elr = malloc(sizeof(double) * 3 * (size_t)ne * ngn);
     E.els = malloc(sizeof(double) * 3 * (size_t)ne * ngn);
     /* face work: x, n (2ne each), W (ne), then phi/dn of both sides (4 ne nm) */
-    fa = malloc(sizeof(double) * ((size_t)7 * ne + 4 * (size_t)ne * nm));
+    fa = malloc(sizeof(double) * ((size_t)7 * ne + 6 * (size_t)ne * nm));
     S->bx = malloc(sizeof(double) * 5 * (size_t)ne * (nb + 1));
     S->bphi = malloc(sizeof(double) * (size_t)ne * nm * (nb + 1));
     S->bdn = malloc(sizeof(double) * (size_t)ne * nm * (nb + 1));
@@ -387,9 +404,10 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
         }
         area[e] = a;
         S->area += a;
-        cblas_dsyrk(CblasRowMajor, CblasLower, CblasTrans, nm, 2 * nq, 1.0, B, nm, 0.0, K, nm);
-        for (int i = 0; i < nm; ++i)
-            for (int j = 0; j < i; ++j) K[(size_t)j * nm + i] = K[(size_t)i * nm + j];
+        /* dgemm rather than dsyrk: OpenBLAS's syrk is far slower for these
+         * tall-skinny shapes */
+        cblas_dgemm(CblasRowMajor, CblasTrans, CblasNoTrans, nm, nm, 2 * nq, 1.0, B, nm, B, nm, 0.0,
+                    K, nm);
         if ((st = scatter(S, K, (long)e * nm, (long)e * nm, err)) != SQ_OK) goto fail;
     }
 
@@ -398,7 +416,7 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
         const double pp = (double)(P + 1) * (P + 2);
         double *x = fa, *nrm = fa + 2 * ne, *W = fa + 4 * ne, *Wb = fa + 5 * ne;
         double *va = fa + 7 * ne, *ga = va + (size_t)ne * nm, *vb = ga + (size_t)ne * nm,
-               *gb = vb + (size_t)ne * nm;
+               *gb = vb + (size_t)ne * nm, *wva = gb + (size_t)ne * nm, *wvb = wva + (size_t)ne * nm;
         double *Kaa = K, *Kab = K + (size_t)nm * nm, *Kbb = K + 2 * (size_t)nm * nm;
         int ib = 0;
         for (int e = 0; e < nt; ++e)
@@ -427,15 +445,13 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
                     memcpy(S->bphi + (size_t)ne * nm * ib, va, sizeof(double) * (size_t)ne * nm);
                     memcpy(S->bdn + (size_t)ne * nm * ib, ga, sizeof(double) * (size_t)ne * nm);
                     if (S->bdir[ib]) {
+                        /* Kaa = sig Va^T W Va - (T + T^T), T = Va^T W Ga */
+                        weigh(ne, nm, W, va, wva);
+                        gemm_tn(nm, ne, sig, wva, va, 0.0, Kaa);
+                        gemm_tn(nm, ne, 1.0, wva, ga, 0.0, KT);
                         for (int i = 0; i < nm; ++i)
-                            for (int j = 0; j < nm; ++j) {
-                                double a = 0.0;
-                                for (int p = 0; p < ne; ++p) {
-                                    const double *vp = va + (size_t)p * nm, *gp = ga + (size_t)p * nm;
-                                    a += W[p] * (sig * vp[i] * vp[j] - vp[i] * gp[j] - gp[i] * vp[j]);
-                                }
-                                Kaa[(size_t)i * nm + j] = a;
-                            }
+                            for (int j = 0; j < nm; ++j)
+                                Kaa[(size_t)i * nm + j] -= KT[(size_t)i * nm + j] + KT[(size_t)j * nm + i];
                         if ((st = scatter(S, Kaa, (long)e * nm, (long)e * nm, err)) != SQ_OK) goto fail;
                     }
                     ++ib;
@@ -451,21 +467,27 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
                     goto fail;
                 }
                 const double sig = DG_PENALTY * pp * fmax(len / area[e], len / area[b]);
+                /* blocks as products of the tabulations (W the face weights):
+                 *   Kaa = sig Va'WVa - (Va'WGa + Ga'WVa)/2
+                 *   Kab = -sig Va'WVb - Va'WGb/2 + Ga'WVb/2
+                 *   Kbb = sig Vb'WVb + (Vb'WGb + Gb'WVb)/2 */
+                weigh(ne, nm, W, va, wva);
+                weigh(ne, nm, W, vb, wvb);
+                gemm_tn(nm, ne, sig, wva, va, 0.0, Kaa);
+                gemm_tn(nm, ne, 1.0, wva, ga, 0.0, KT);
                 for (int i = 0; i < nm; ++i)
-                    for (int j = 0; j < nm; ++j) {
-                        double aa = 0.0, ab = 0.0, bb = 0.0;
-                        for (int p = 0; p < ne; ++p) {
-                            const size_t o = (size_t)p * nm;
-                            const double vai = va[o + i], gai = ga[o + i], vbi = vb[o + i], gbi = gb[o + i];
-                            const double vaj = va[o + j], gaj = ga[o + j], vbj = vb[o + j], gbj = gb[o + j];
-                            aa += W[p] * (sig * vai * vaj - 0.5 * (vai * gaj + gai * vaj));
-                            ab += W[p] * (-sig * vai * vbj - 0.5 * vai * gbj + 0.5 * gai * vbj);
-                            bb += W[p] * (sig * vbi * vbj + 0.5 * (vbi * gbj + gbi * vbj));
-                        }
-                        Kaa[(size_t)i * nm + j] = aa;
-                        Kab[(size_t)i * nm + j] = ab;
-                        Kbb[(size_t)i * nm + j] = bb;
-                    }
+                    for (int j = 0; j < nm; ++j)
+                        Kaa[(size_t)i * nm + j] -= 0.5 * (KT[(size_t)i * nm + j] + KT[(size_t)j * nm + i]);
+                gemm_tn(nm, ne, -sig, wva, vb, 0.0, Kab);
+                gemm_tn(nm, ne, -0.5, wva, gb, 1.0, Kab);
+                gemm_tn(nm, ne, 1.0, wvb, ga, 0.0, KT);
+                for (int i = 0; i < nm; ++i)
+                    for (int j = 0; j < nm; ++j) Kab[(size_t)i * nm + j] += 0.5 * KT[(size_t)j * nm + i];
+                gemm_tn(nm, ne, sig, wvb, vb, 0.0, Kbb);
+                gemm_tn(nm, ne, 1.0, wvb, gb, 0.0, KT);
+                for (int i = 0; i < nm; ++i)
+                    for (int j = 0; j < nm; ++j)
+                        Kbb[(size_t)i * nm + j] += 0.5 * (KT[(size_t)i * nm + j] + KT[(size_t)j * nm + i]);
                 if ((st = scatter(S, Kaa, (long)e * nm, (long)e * nm, err)) != SQ_OK) goto fail;
                 if ((st = scatter(S, Kab, (long)e * nm, (long)b * nm, err)) != SQ_OK) goto fail;
                 if ((st = scatter(S, Kbb, (long)b * nm, (long)b * nm, err)) != SQ_OK) goto fail;
@@ -496,6 +518,7 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
     free(dsq);
     free(B);
     free(K);
+    free(KT);
     free(area);
     free(fa);
     free(E.ephi);
@@ -520,6 +543,7 @@ fail:
     free(dsq);
     free(B);
     free(K);
+    free(KT);
     free(area);
     free(fa);
     free(E.ephi);

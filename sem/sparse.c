@@ -31,6 +31,9 @@ sq_status sem_sparse_create(long n, long nnz_hint, sem_sparse **out, sq_error *e
     a->cc_started = 1;
     a->cc.print = 0;            /* a library never prints */
     a->cc.error_handler = NULL; /* errors are read from cc.status */
+    /* LL' also in the simplicial case: an LDL' factorization would accept
+     * an indefinite matrix, which must be reported instead. */
+    a->cc.final_ll = 1;
     a->T = cholmod_l_allocate_triplet((size_t)n, (size_t)n, (size_t)nnz_hint, -1, CHOLMOD_REAL,
                                       &a->cc);
     if (!a->T) {

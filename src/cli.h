@@ -21,5 +21,6 @@ sq_status sq_cli_open_face(const char *path, int face, cad_model **model, cad_fa
 /* Subcommands: return an sq_status, print errors through err. */
 sq_status sq_cmd_info(int argc, char **argv, sq_error *err);
 sq_status sq_cmd_triangulate(int argc, char **argv, sq_error *err);
+sq_status sq_cmd_field(int argc, char **argv, sq_error *err);
 
 #endif

@@ -24,6 +24,11 @@ static const char *usage =
     "      Delaunay refinement (min angle A, default 20 deg; longest edge H, default\n"
     "      sqrt(area)/3), boundary segments turning at most T degrees (default 30),\n"
     "      high-order nodes exactly on the CAD curves.\n"
+    "  field FILE [--face N] [--order P] [--method auto|cg|dg] [--size H] [--geom-order G]\n"
+    "        [--vtu out.vtu] [--svg out.svg] [--report out.json] [--quiet]\n"
+    "      guiding field (u,v) = (cos 4t, sin 4t) of order P (1..16, default 8), its\n"
+    "      critical points with valences, corner valences, Poincare-Hopf check. auto\n"
+    "      uses CG when every corner is a multiple of 90 deg, DG otherwise.\n"
     "  help                 this text\n"
     "  --version            the version\n"
     "\n"
@@ -53,6 +58,8 @@ int main(int argc, char **argv)
         return 0;
     } else if (!strcmp(cmd, "info")) {
         st = sq_cmd_info(argc - 2, argv + 2, &err);
+    } else if (!strcmp(cmd, "field")) {
+        st = sq_cmd_field(argc - 2, argv + 2, &err);
     } else if (!strcmp(cmd, "triangulate")) {
         st = sq_cmd_triangulate(argc - 2, argv + 2, &err);
     } else {

@@ -12,7 +12,10 @@
  *    t linear in xi over a quarter of the circle, so boundary nodes lie
  *    exactly on the circle (at the angles of the edge's GLL nodes) and the
  *    map is smooth inside each block.  Boundary tag 0.  The centre is a
- *    vertex when n is even.
+ *    vertex when n is even.  tm_disc_a(R, a, n, Pg) chooses a.  The blend
+ *    distorts the outer triangles (scaled Jacobian about 0.26 at n = 1,
+ *    0.32 at n = 2): with n = 1 the interpolation error of e^x sin y at
+ *    P = 12 is only 8e-8, with n = 2 it is 2e-11.
  * Both are counter-clockwise with neighbours built. */
 #ifndef SQ_TEST_MESHES_H
 #define SQ_TEST_MESHES_H
@@ -152,8 +155,9 @@ static inline int tm_vertex(sem_tri_mesh *m, int *nv, const double p[2])
     return (*nv)++;
 }
 
-/* Disc of radius R, 5 blocks of n x n cells, geometry order Pg. */
-static inline sem_tri_mesh *tm_disc(double R, int n, int Pg)
+/* Disc of radius R, 5 blocks of n x n cells, geometry order Pg, inner
+ * square [-a,a]^2 (0 < a < R/sqrt 2). */
+static inline sem_tri_mesh *tm_disc_a(double R, double a, int n, int Pg)
 {
     sem_tri_mesh *m = NULL;
     const int ntri = 5 * 2 * n * n;
@@ -166,7 +170,7 @@ static inline sem_tri_mesh *tm_disc(double R, int n, int Pg)
     }
     int nv = 0, t = 0;
     for (int side = -1; side < 4; ++side) {
-        const tm_disc_block blk = {R, 0.5 * R, side};
+        const tm_disc_block blk = {R, a, side};
         for (int j = 0; j < n; ++j)
             for (int i = 0; i < n; ++i) {
                 const double p00[2] = {(double)i / n, (double)j / n};
@@ -208,6 +212,9 @@ static inline sem_tri_mesh *tm_disc(double R, int n, int Pg)
     return m;
 }
 
+/* The same with a = R/2. */
+static inline sem_tri_mesh *tm_disc(double R, int n, int Pg) { return tm_disc_a(R, 0.5 * R, n, Pg); }
+
 /* Exact solution: value and gradient at x. */
 typedef void (*tm_exact_fn)(const double x[2], void *ctx, double *u, double grad[2]);
 
@@ -222,6 +229,8 @@ static inline int tm_errors_region(const sem_field *u, tm_exact_fn exact, void *
     const sem_tri_mesh *m = u->mesh;
     sem_tri_quad *q = NULL;
     sem_tri_lagrange *L = NULL;
+    *l2 = NAN;
+    if (h1) *h1 = NAN;
     if (sem_tri_quad_create(2 * u->P + 2 * m->order + 4, &q, NULL) != SQ_OK) return 1;
     if (sem_tri_lagrange_create(m->order, &L, NULL) != SQ_OK) {
         sem_tri_quad_free(&q);

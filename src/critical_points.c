@@ -1,0 +1,215 @@
+#include "critical_points.h"
+
+#include "field.h"
+#include "locate.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define NEWTON_MAX_IT 60
+#define NEWTON_MAX_HOPS 32
+#define FLAG_TOL 1e-6 /* |(u, v)| is 1 on the boundary */
+
+sq_status sq_face_boundary_distance(const cad_face *face, const double p[2], double *dist,
+                                    sq_error *err)
+{
+    double best = HUGE_VAL;
+    for (int e = 0; e < cad_face_num_edges(face); e++) {
+        double d;
+        SQ_TRY(cad_face_edge_project(face, e, p, NULL, NULL, &d, err));
+        if (d < best) best = d;
+    }
+    *dist = best;
+    return SQ_OK;
+}
+
+/* Unwrapped change of atan2(v, u) from a to b, assuming it is less than π
+ * in magnitude. */
+static double turn(const double a[2], const double b[2])
+{
+    return atan2(a[0] * b[1] - a[1] * b[0], a[0] * b[0] + a[1] * b[1]);
+}
+
+sq_status sq_field_winding(const sq_guiding_field *g, const double c[2], double rho, int *index,
+                           sq_error *err)
+{
+    for (int n = 64; n <= 8192; n *= 2) {
+        double total = 0.0, first[2], prev[2], cur[2];
+        int elem = -1, ok = 1;
+        for (int k = 0; k <= n && ok; k++) {
+            double a = 2.0 * M_PI * (k % n) / n, x[2] = {c[0] + rho * cos(a), c[1] + rho * sin(a)};
+            if (sq_guiding_field_eval(g, x, &elem, cur, NULL)) {
+                return SQ_FAIL(err, SQ_ERR_INTERNAL,
+                               "index circle of radius %g around (%g, %g) leaves the face", rho,
+                               c[0], c[1]);
+            }
+            if (k == 0) memcpy(first, cur, sizeof first);
+            else {
+                double d = turn(prev, cur);
+                if (fabs(d) > 0.5 * M_PI) ok = 0; /* too coarse: refine */
+                total += d;
+            }
+            memcpy(prev, cur, sizeof prev);
+        }
+        (void)first;
+        if (ok) {
+            *index = (int)lround(total / (2.0 * M_PI));
+            return SQ_OK;
+        }
+    }
+    return SQ_FAIL(err, SQ_ERR_INTERNAL, "cannot resolve the index around (%g, %g)", c[0], c[1]);
+}
+
+/* Lattice scan of element e: does it hold sign changes of both u and v?
+ * best[2]: the lattice point (r, s) of least |(u, v)|. */
+static int flag_element(const sem_field *f, int e, int S, double best[2])
+{
+    double umin = HUGE_VAL, umax = -HUGE_VAL, vmin = HUGE_VAL, vmax = -HUGE_VAL, bmin = HUGE_VAL;
+    for (int j = 0; j <= S; j++)
+        for (int i = 0; i + j <= S; i++) {
+            double r = (double)i / S, s = (double)j / S, uv[2];
+            sem_field_eval_ref(f, e, r, s, uv, NULL, NULL);
+            umin = fmin(umin, uv[0]);
+            umax = fmax(umax, uv[0]);
+            vmin = fmin(vmin, uv[1]);
+            vmax = fmax(vmax, uv[1]);
+            double m = hypot(uv[0], uv[1]);
+            if (m < bmin) {
+                bmin = m;
+                best[0] = r;
+                best[1] = s;
+            }
+        }
+    /* A root on a mesh vertex or edge leaves only round-off (CG) or the
+     * inter-element jump (DG) of sign change in some of the elements around
+     * it: accept near-zero extremes. */
+    return umin <= FLAG_TOL && umax >= -FLAG_TOL && vmin <= FLAG_TOL && vmax >= -FLAG_TOL;
+}
+
+/* Newton on element e's own polynomial from (r, s), iterates allowed to
+ * leave the element (the polynomial and the map extend smoothly).
+ * Returns 0 on convergence. */
+static int newton_local(const sem_field *f, int e, double *r, double *s)
+{
+    for (int it = 0; it < NEWTON_MAX_IT; it++) {
+        double uv[2], dr[2], ds[2];
+        sem_field_eval_ref(f, e, *r, *s, uv, dr, ds);
+        double det = dr[0] * ds[1] - ds[0] * dr[1];
+        if (det == 0.0 || !isfinite(det)) return 1;
+        double delta_r = -(ds[1] * uv[0] - ds[0] * uv[1]) / det;
+        double delta_s = -(-dr[1] * uv[0] + dr[0] * uv[1]) / det;
+        double len = hypot(delta_r, delta_s);
+        if (len > 0.25) { /* damp: far from the element the extension means nothing */
+            delta_r *= 0.25 / len;
+            delta_s *= 0.25 / len;
+        }
+        *r += delta_r;
+        *s += delta_s;
+        if (fabs(*r) > 3.0 || fabs(*s) > 3.0) return 1;
+        if (len < 1e-14) return 0;
+    }
+    return 1;
+}
+
+/* A root of element e's polynomial from (r, s); if it lies outside e, the
+ * search continues in the element that holds it (a root is owned by the
+ * element containing it; NekMesh drops such roots).  A DG field jumps across
+ * edges, so a root within DG_MARGIN of its element (in reference units) is
+ * accepted where it is.  Returns 0 with the owner and its (r, s). */
+#define DG_MARGIN 1e-6
+static int newton(const sq_guiding_field *g, int e, double r, double s, int *eo, double *ro,
+                  double *so)
+{
+    const sem_locator *loc = sem_field_evaluator_locator(g->ev);
+    for (int hop = 0; hop <= NEWTON_MAX_HOPS; hop++) {
+        if (newton_local(g->uv, e, &r, &s)) return 1;
+        double margin = fmax(fmax(-r, -s), r + s - 1.0);
+        if (margin <= DG_MARGIN) {
+            double uv[2];
+            sem_field_eval_ref(g->uv, e, r, s, uv, NULL, NULL);
+            if (!(hypot(uv[0], uv[1]) < 1e-9)) return 1;
+            *eo = e;
+            *ro = r;
+            *so = s;
+            return 0;
+        }
+        double x[2];
+        int en;
+        sem_locator_map(loc, e, r, s, x, NULL);
+        if (sem_locator_find(loc, x, e, &en, &r, &s)) return 1; /* left the face */
+        e = en;
+    }
+    return 1;
+}
+
+static double element_size(const sem_tri_mesh *m, int e)
+{
+    const double *a = &m->vxy[2 * m->tri[3 * e]], *b = &m->vxy[2 * m->tri[3 * e + 1]],
+                 *c = &m->vxy[2 * m->tri[3 * e + 2]];
+    return sqrt(0.5 * fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])));
+}
+
+sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *face,
+                                  const sq_face_info *info, sq_critical_point **pts, int *npts,
+                                  sq_error *err)
+{
+    const sem_tri_mesh *m = g->mesh;
+    const sem_locator *loc = sem_field_evaluator_locator(g->ev);
+    int S = 2 * g->order > 8 ? 2 * g->order : 8, n = 0, cap = 8;
+    double diag = hypot(info->bbox[2] - info->bbox[0], info->bbox[3] - info->bbox[1]);
+    sq_critical_point *p = malloc(sizeof *p * (size_t)cap);
+    if (!p) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    sq_status st = SQ_OK;
+    for (int e = 0; e < m->ntris && st == SQ_OK; e++) {
+        double best[2] = {1.0 / 3.0, 1.0 / 3.0};
+        if (!flag_element(g->uv, e, S, best)) continue;
+        const double starts[2][2] = {{best[0], best[1]}, {1.0 / 3.0, 1.0 / 3.0}};
+        for (int k = 0; k < 2; k++) {
+            int er;
+            double rr, sr, x[2];
+            if (newton(g, e, starts[k][0], starts[k][1], &er, &rr, &sr)) continue;
+            sem_locator_map(loc, er, rr, sr, x, NULL);
+            int dup = 0;
+            for (int q = 0; q < n && !dup; q++)
+                dup = hypot(p[q].x - x[0], p[q].y - x[1]) < 1e-5 * element_size(m, er);
+            if (dup) continue;
+            if (n == cap) {
+                sq_critical_point *np = realloc(p, sizeof *p * (size_t)(cap *= 2));
+                if (!np) {
+                    st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+                    break;
+                }
+                p = np;
+            }
+            double uv[2];
+            sem_field_eval_ref(g->uv, er, rr, sr, uv, NULL, NULL);
+            p[n] = (sq_critical_point){.x = x[0], .y = x[1], .elem = er, .r = rr, .s = sr,
+                                       .residual = hypot(uv[0], uv[1])};
+            n++;
+        }
+    }
+    /* indices on circles that hold no other point and stay in the face */
+    for (int q = 0; q < n && st == SQ_OK; q++) {
+        double c[2] = {p[q].x, p[q].y}, rho = 0.25 * element_size(m, p[q].elem);
+        st = sq_face_boundary_distance(face, c, &p[q].dist_boundary, err);
+        if (st != SQ_OK) break;
+        p[q].near_boundary = p[q].dist_boundary < SQ_NEAR_BOUNDARY_REL * diag;
+        rho = fmin(rho, 0.5 * p[q].dist_boundary);
+        for (int o = 0; o < n; o++)
+            if (o != q) rho = fmin(rho, 0.4 * hypot(p[o].x - c[0], p[o].y - c[1]));
+        if (p[q].near_boundary) {
+            p[q].index = 0; /* no circle fits: reported with its distance */
+        } else {
+            st = sq_field_winding(g, c, rho, &p[q].index, err);
+        }
+        p[q].valence = 4 - p[q].index;
+    }
+    if (st != SQ_OK) {
+        free(p);
+        return st;
+    }
+    *pts = p;
+    *npts = n;
+    return SQ_OK;
+}

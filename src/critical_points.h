@@ -1,0 +1,50 @@
+/* semquad — critical points of the guiding field and their valences
+ * (Marcon 2019 §2.3 and §3.2; ../shared/DESIGN.md "Index and valence").
+ *
+ * design:
+ *  1. flag every element where u and v both change sign on a lattice of
+ *     order max(2P, 8) of its own polynomial (vertices and edges included);
+ *  2. in each flagged element, Newton on (u, v) = 0 in reference coordinates
+ *     with the polynomial's exact derivatives, from the lattice point of
+ *     least |(u, v)| and from the centroid; an iterate that leaves the
+ *     element is mapped to the physical plane and continued in the element
+ *     that contains it (NekMesh drops such roots), so each root is found in
+ *     the element that holds it;
+ *  3. merge roots found more than once (shared edges and vertices);
+ *  4. index = winding number of (u, v) on a small circle around the point
+ *     (unwrapped atan2, sampled until every step turns less than π/2);
+ *     valence V = 4 - index (eq. 13, Table 1), indices ±2 included. */
+#ifndef SQ_CRITICAL_POINTS_H
+#define SQ_CRITICAL_POINTS_H
+
+#include "guiding_field.h"
+
+typedef struct {
+    double x, y;
+    int elem;
+    double r, s;          /* reference coordinates in elem */
+    int index;            /* Poincaré index of (u, v) */
+    int valence;          /* 4 - index */
+    double dist_boundary; /* distance to the face's boundary */
+    int near_boundary;    /* closer than SQ_NEAR_BOUNDARY_REL * face size */
+    double residual;      /* |(u, v)| at the point */
+} sq_critical_point;
+
+/* Relative distance (to the face's bounding-box diagonal) under which a
+ * critical point is flagged as lying on the boundary. */
+#define SQ_NEAR_BOUNDARY_REL 1e-3
+
+sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *face,
+                                  const sq_face_info *info, sq_critical_point **pts, int *npts,
+                                  sq_error *err);
+
+/* Winding number of (u, v) on the circle of radius rho around c, sampled
+ * adaptively; SQ_ERR_INTERNAL if part of the circle leaves the domain. */
+sq_status sq_field_winding(const sq_guiding_field *g, const double c[2], double rho, int *index,
+                           sq_error *err);
+
+/* Distance from p to the boundary of the face (all its edges). */
+sq_status sq_face_boundary_distance(const cad_face *face, const double p[2], double *dist,
+                                    sq_error *err);
+
+#endif

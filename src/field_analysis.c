@@ -1,0 +1,63 @@
+#include "field_analysis.h"
+
+#include <stdlib.h>
+#include <string.h>
+#include <time.h>
+
+double sq_now(void)
+{
+    struct timespec ts;
+    clock_gettime(CLOCK_MONOTONIC, &ts);
+    return (double)ts.tv_sec + 1e-9 * (double)ts.tv_nsec;
+}
+
+void sq_field_options_default(sq_field_options *opt)
+{
+    memset(opt, 0, sizeof *opt);
+    opt->order = 8;
+    opt->method = SQ_METHOD_AUTO;
+    sq_tri_options_default(&opt->tri);
+    opt->tri.order = 8;
+}
+
+void sq_field_analysis_free(sq_field_analysis *a)
+{
+    if (!a) return;
+    free(a->points);
+    free(a->corners);
+    sq_guiding_field_free(&a->field);
+    sq_triangulation_free(&a->tri);
+    sq_face_info_free(&a->info);
+    memset(a, 0, sizeof *a);
+}
+
+sq_status sq_field_analyse(const cad_face *face, const sq_field_options *opt,
+                           sq_field_analysis *out, sq_error *err)
+{
+    memset(out, 0, sizeof *out);
+    double t0 = sq_now();
+    sq_status st = sq_face_info_compute(face, &out->info, err);
+    if (st == SQ_OK) st = sq_triangulate(face, &opt->tri, &out->tri, err);
+    double t1 = sq_now();
+    if (st == SQ_OK)
+        st = sq_guiding_field_solve(face, &out->info, out->tri.mesh, opt->order, opt->method,
+                                    &out->field, err);
+    double t2 = sq_now();
+    if (st == SQ_OK)
+        st = sq_critical_points_find(&out->field, face, &out->info, &out->points, &out->npoints,
+                                     err);
+    if (st == SQ_OK) st = sq_corner_valences(&out->field, face, &out->info, &out->corners, err);
+    double t3 = sq_now();
+    if (st != SQ_OK) {
+        sq_field_analysis_free(out);
+        return st;
+    }
+    out->t_triangulate = t1 - t0;
+    out->t_solve = t2 - t1;
+    out->t_critical = t3 - t2;
+    /* Poincaré–Hopf with Gauss–Bonnet (../shared/DESIGN.md) */
+    for (int k = 0; k < out->npoints; k++) out->ph_lhs += 4 - out->points[k].valence;
+    for (int k = 0; k < out->info.nvertices; k++) out->ph_lhs += 2 - out->corners[k].valence;
+    out->ph_rhs = 4 * out->info.chi;
+    return SQ_OK;
+}

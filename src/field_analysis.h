@@ -1,0 +1,37 @@
+/* semquad — the guiding-field stage end to end: triangulate, solve, find
+ * the critical points, give corners their valences, check Poincaré–Hopf. */
+#ifndef SQ_FIELD_ANALYSIS_H
+#define SQ_FIELD_ANALYSIS_H
+
+#include "corner_valence.h"
+#include "critical_points.h"
+#include "triangulate.h"
+
+typedef struct {
+    int order;          /* P of the field */
+    sq_method method;   /* auto, cg, dg */
+    sq_tri_options tri; /* the triangulation (its order: min(P, 12)) */
+} sq_field_options;
+
+void sq_field_options_default(sq_field_options *opt);
+
+typedef struct {
+    sq_face_info info;
+    sq_triangulation tri;
+    sq_guiding_field field;
+    int npoints;
+    sq_critical_point *points;
+    sq_corner_valence *corners; /* one per info.vertices */
+    /* Σ_interior (4 - V) + Σ_vertices (2 - n) against 4χ */
+    int ph_lhs, ph_rhs;
+    double t_triangulate, t_solve, t_critical; /* seconds */
+} sq_field_analysis;
+
+sq_status sq_field_analyse(const cad_face *face, const sq_field_options *opt,
+                           sq_field_analysis *out, sq_error *err);
+void sq_field_analysis_free(sq_field_analysis *a); /* frees, zeroes the struct */
+
+/* Wall-clock seconds (monotonic). */
+double sq_now(void);
+
+#endif

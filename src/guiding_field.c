@@ -1,0 +1,105 @@
+#include "guiding_field.h"
+
+#include "field_error.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+sem_method sq_guiding_method_auto(const sq_face_info *info)
+{
+    for (int v = 0; v < info->nvertices; v++) {
+        double q = info->vertices[v].angle_deg / 90.0;
+        if (fabs(q - round(q)) * 90.0 > SQ_RIGHT_ANGLE_TOL_DEG) return SEM_DG;
+    }
+    return SEM_CG;
+}
+
+sq_status sq_guiding_boundary_value(const cad_face *face, int edge, const double x[2],
+                                    double uv[2], sq_error *err)
+{
+    double s, t[2];
+    SQ_TRY(cad_face_edge_project(face, edge, x, &s, NULL, NULL, err));
+    SQ_TRY(cad_face_edge_eval(face, edge, s, NULL, t, NULL, err));
+    double theta = atan2(t[1], t[0]); /* Marcon 2019, eq. (3) */
+    uv[0] = cos(4.0 * theta);
+    uv[1] = sin(4.0 * theta);
+    return SQ_OK;
+}
+
+typedef struct {
+    const cad_face *face;
+    int comp;
+    sq_status status; /* first failure, latched: the solver's callback has no error path */
+    sq_error *err;
+} bdata_ctx;
+
+static double boundary_data(const double x[2], const double n[2], int tag, void *p)
+{
+    (void)n;
+    bdata_ctx *c = p;
+    double uv[2] = {0.0, 0.0};
+    if (c->status == SQ_OK) c->status = sq_guiding_boundary_value(c->face, tag, x, uv, c->err);
+    return uv[c->comp];
+}
+
+static void zero_exact(const double x[2], void *ctx, double *u, double grad[2])
+{
+    (void)x;
+    (void)ctx;
+    *u = 0.0;
+    grad[0] = grad[1] = 0.0;
+}
+
+void sq_guiding_field_free(sq_guiding_field *g)
+{
+    if (!g) return;
+    sem_field_evaluator_free(&g->ev);
+    sem_field_free(&g->uv);
+    memset(g, 0, sizeof *g);
+}
+
+sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
+                                 const sem_tri_mesh *mesh, int order, sq_method method,
+                                 sq_guiding_field *out, sq_error *err)
+{
+    memset(out, 0, sizeof *out);
+    sem_method m = method == SQ_METHOD_AUTO ? sq_guiding_method_auto(info) : (sem_method)method;
+    sem_poisson *solver = NULL;
+    sem_field *comp[2] = {NULL, NULL};
+    SQ_TRY(sem_poisson_create(mesh, order, m, NULL, NULL, &solver, err));
+    sq_status st = sem_field_create(mesh, order, 2, &out->uv, err);
+    /* u and v share the matrix: one factorization, two right-hand sides */
+    for (int c = 0; c < 2 && st == SQ_OK; c++) {
+        bdata_ctx ctx = {face, c, SQ_OK, err};
+        sem_poisson_data data = {.g = boundary_data, .g_ctx = &ctx};
+        st = sem_field_create(mesh, order, 1, &comp[c], err);
+        if (st == SQ_OK) st = sem_poisson_solve(solver, &data, comp[c], err);
+        if (st == SQ_OK) st = ctx.status;
+        if (st == SQ_OK) st = sem_field_error(comp[c], 0, zero_exact, NULL, 0,
+                                              c ? &out->l2_v : &out->l2_u, NULL, err);
+    }
+    if (st == SQ_OK) {
+        int nm = out->uv->nmodes;
+        for (long k = 0; k < (long)mesh->ntris * nm; k++) {
+            out->uv->coef[2 * k] = comp[0]->coef[k];
+            out->uv->coef[2 * k + 1] = comp[1]->coef[k];
+        }
+        out->mesh = mesh;
+        out->method = m;
+        out->order = order;
+        out->ndofs = sem_poisson_ndofs(solver);
+        st = sem_field_evaluator_create(out->uv, NULL, &out->ev, err);
+    }
+    sem_field_free(&comp[0]);
+    sem_field_free(&comp[1]);
+    sem_poisson_free(&solver);
+    if (st != SQ_OK) sq_guiding_field_free(out);
+    return st;
+}
+
+int sq_guiding_field_eval(const sq_guiding_field *g, const double x[2], int *elem, double uv[2],
+                          double grad[4])
+{
+    return sem_field_evaluator_eval(g->ev, x, elem, uv, grad);
+}

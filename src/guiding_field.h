@@ -1,0 +1,49 @@
+/* semquad — the boundary-aligned guiding field (Marcon 2019, eqs. 3-4):
+ * Δu = Δv = 0 in the face, (u, v) = (cos 4θ_b, sin 4θ_b) on its boundary,
+ * θ_b the tangent angle of the CAD curve, solved with CG or DG spectral/hp
+ * elements of order P on the curved triangulation. */
+#ifndef SQ_GUIDING_FIELD_H
+#define SQ_GUIDING_FIELD_H
+
+#include "cad.h"
+#include "face_info.h"
+#include "field_eval.h"
+#include "poisson.h"
+
+/* Corner angles within this of a multiple of 90 degrees keep the boundary
+ * data continuous (CG is used by --method auto). */
+#define SQ_RIGHT_ANGLE_TOL_DEG 1e-3
+
+typedef enum { SQ_METHOD_AUTO = -1, SQ_METHOD_CG = SEM_CG, SQ_METHOD_DG = SEM_DG } sq_method;
+
+typedef struct {
+    const sem_tri_mesh *mesh; /* borrowed */
+    sem_method method;        /* what was used */
+    int order;
+    long ndofs;               /* per component */
+    sem_field *uv;            /* two components: u, v */
+    sem_field_evaluator *ev;  /* on uv */
+    double l2_u, l2_v;        /* L2 norms over the face */
+} sq_guiding_field;
+
+/* The method --method auto picks: CG when every corner angle is a multiple
+ * of 90 degrees (within SQ_RIGHT_ANGLE_TOL_DEG), else DG. */
+sem_method sq_guiding_method_auto(const sq_face_info *info);
+
+/* Boundary data at a point of CAD edge `edge`: (cos 4θ_b, sin 4θ_b) from the
+ * edge's exact tangent at the point nearest to x. */
+sq_status sq_guiding_boundary_value(const cad_face *face, int edge, const double x[2],
+                                    double uv[2], sq_error *err);
+
+sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
+                                 const sem_tri_mesh *mesh, int order, sq_method method,
+                                 sq_guiding_field *out, sq_error *err);
+void sq_guiding_field_free(sq_guiding_field *g); /* frees, zeroes the struct */
+
+/* (u, v) and their physical gradients (grad[4] = {u_x, u_y, v_x, v_y}, may
+ * be NULL) at a physical point; *elem is a hint in, the element out.
+ * Returns 0, or 1 if x is outside the triangulation. */
+int sq_guiding_field_eval(const sq_guiding_field *g, const double x[2], int *elem, double uv[2],
+                          double grad[4]);
+
+#endif
