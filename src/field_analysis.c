@@ -1,5 +1,6 @@
 #include "field_analysis.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 #include <time.h>
@@ -18,6 +19,32 @@ void sq_field_options_default(sq_field_options *opt)
     opt->method = SQ_METHOD_AUTO;
     sq_tri_options_default(&opt->tri);
     opt->tri.order = 8;
+    opt->grading = 1e-3;
+}
+
+sq_status sq_singular_vertices(const cad_face *face, const sq_face_info *info, double *xy, int *n,
+                               sq_error *err)
+{
+    *n = 0;
+    for (int k = 0; k < info->nvertices; k++) {
+        const sq_vertex *v = &info->vertices[k];
+        double q = v->angle_deg / 90.0, kin, kout;
+        int singular = fabs(q - round(q)) * 90.0 > SQ_RIGHT_ANGLE_TOL_DEG ||
+                       v->angle_deg > 180.0 + SQ_SMOOTH_TOL_DEG;
+        if (!singular) {
+            double Lin = cad_face_edge_length(face, v->edge_in);
+            SQ_TRY(cad_face_edge_eval(face, v->edge_in, Lin, NULL, NULL, &kin, err));
+            SQ_TRY(cad_face_edge_eval(face, v->edge_out, 0.0, NULL, NULL, &kout, err));
+            /* a jump of curvature against the face's scale */
+            double scale = hypot(info->bbox[2] - info->bbox[0], info->bbox[3] - info->bbox[1]);
+            singular = v->smooth && fabs(kin - kout) * scale > 1e-6;
+        }
+        if (!singular) continue;
+        xy[2 * *n] = v->x;
+        xy[2 * *n + 1] = v->y;
+        (*n)++;
+    }
+    return SQ_OK;
 }
 
 void sq_field_analysis_free(sq_field_analysis *a)
@@ -37,7 +64,17 @@ sq_status sq_field_analyse(const cad_face *face, const sq_field_options *opt,
     memset(out, 0, sizeof *out);
     double t0 = sq_now();
     sq_status st = sq_face_info_compute(face, &out->info, err);
-    if (st == SQ_OK) st = sq_triangulate(face, &opt->tri, &out->tri, err);
+    sq_tri_options tri = opt->tri;
+    double *graded = malloc(sizeof(double) * 2 * (size_t)(out->info.nvertices + 1));
+    if (st == SQ_OK && !graded) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK && opt->grading > 0.0 && tri.nextra == 0) {
+        st = sq_singular_vertices(face, &out->info, graded, &tri.nextra, err);
+        tri.extra_xy = graded;
+        double size = tri.size > 0.0 ? tri.size : sqrt(fabs(out->info.area)) / 3.0;
+        tri.extra_size = opt->grading * size;
+    }
+    if (st == SQ_OK) st = sq_triangulate(face, &tri, &out->tri, err);
+    free(graded);
     double t1 = sq_now();
     if (st == SQ_OK)
         st = sq_guiding_field_solve(face, &out->info, out->tri.mesh, opt->order, opt->method,

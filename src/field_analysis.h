@@ -11,7 +11,17 @@ typedef struct {
     int order;          /* P of the field */
     sq_method method;   /* auto, cg, dg */
     sq_tri_options tri; /* the triangulation (its order: min(P, 12)) */
+    double grading;     /* > 0: element size at singular boundary vertices,
+                           relative to the triangulation size (hp grading,
+                           see sq_singular_vertices); 0: no grading */
 } sq_field_options;
+
+/* Boundary vertices where the guiding field is singular and limits
+ * convergence to algebraic rates: corners whose angle is not a multiple of
+ * 90 degrees (the boundary data jumps), re-entrant corners, and smooth
+ * junctions where the curvature jumps.  xy[2*nvertices]; returns the count. */
+sq_status sq_singular_vertices(const cad_face *face, const sq_face_info *info, double *xy, int *n,
+                               sq_error *err);
 
 void sq_field_options_default(sq_field_options *opt);
 

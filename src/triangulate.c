@@ -49,11 +49,32 @@ static sq_status bdisc_insert(bdisc *b, int e, double s, sq_error *err)
     return SQ_OK;
 }
 
-/* Step 1 of the design: equidistribute rho(s) = 1/size + |k(s)|/max_turn. */
-static sq_status bdisc_initial(const cad_face *face, double size, double max_turn, bdisc *b,
+typedef struct {
+    double size, extra_size;
+    int nextra;
+    const double *extra_xy;
+} size_ctx;
+
+/* Graded size around the extra points: extra_size there, growing at rate
+ * 1/2 with distance, capped by the global size. */
+static double graded_size(const double xy[2], void *p)
+{
+    const size_ctx *c = p;
+    double h = c->size;
+    for (int i = 0; i < c->nextra; i++) {
+        double d = hypot(xy[0] - c->extra_xy[2 * i], xy[1] - c->extra_xy[2 * i + 1]);
+        double hi = c->extra_size + 0.5 * d;
+        if (hi < h) h = hi;
+    }
+    return h;
+}
+
+/* Step 1 of the design: equidistribute rho(s) = 1/size(x(s)) + |k(s)|/max_turn,
+ * size(x) graded towards the extra points. */
+static sq_status bdisc_initial(const cad_face *face, const size_ctx *sc, double max_turn, bdisc *b,
                                sq_error *err)
 {
-    enum { NS = 512 };
+    enum { NS = 2048 };
     int ne = cad_face_num_edges(face);
     b->nedges = ne;
     b->n = calloc((size_t)ne, sizeof(int));
@@ -75,10 +96,9 @@ static sq_status bdisc_initial(const cad_face *face, double size, double max_tur
             if (L > cad_face_edge_length(face, longest)) longest = e;
             cum[0] = 0.0;
             for (int k = 0; k <= NS && st == SQ_OK; k++) {
-                double kappa = 0.0;
-                if (cad_face_edge_type(face, e) != CAD_EDGE_LINE)
-                    st = cad_face_edge_eval(face, e, L * k / NS, NULL, NULL, &kappa, err);
-                double rho = 1.0 / size + fabs(kappa) / max_turn;
+                double kappa = 0.0, x[2];
+                st = cad_face_edge_eval(face, e, L * k / NS, x, NULL, &kappa, err);
+                double rho = 1.0 / graded_size(x, (void *)sc) + fabs(kappa) / max_turn;
                 if (k > 0) cum[k] = cum[k - 1] + 0.5 * (rho + rho_prev) * L / NS;
                 rho_prev = rho;
             }
@@ -192,26 +212,6 @@ static sq_status hole_seed(const bpoly *p, int start, double seed[2], sq_error *
         } while (i != start);
     }
     return SQ_FAIL(err, SQ_ERR_GEOMETRY, "cannot find a point inside a hole of the face");
-}
-
-typedef struct {
-    double size, extra_size;
-    int nextra;
-    const double *extra_xy;
-} size_ctx;
-
-/* Graded size around the extra points: extra_size there, growing at rate
- * 1/2 with distance, capped by the global size. */
-static double graded_size(const double xy[2], void *p)
-{
-    const size_ctx *c = p;
-    double h = c->size;
-    for (int i = 0; i < c->nextra; i++) {
-        double d = hypot(xy[0] - c->extra_xy[2 * i], xy[1] - c->extra_xy[2 * i + 1]);
-        double hi = c->extra_size + 0.5 * d;
-        if (hi < h) h = hi;
-    }
-    return h;
 }
 
 void sq_tri_options_default(sq_tri_options *opt)
@@ -411,7 +411,7 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
     bdisc b = {0};
     bpoly p = {0};
     cad_cdt_output o = {0};
-    sq_status st = bdisc_initial(face, size, opt->max_turn_deg * M_PI / 180.0, &b, err);
+    sq_status st = bdisc_initial(face, &sc, opt->max_turn_deg * M_PI / 180.0, &b, err);
     int round = 0, done = 0;
     for (; st == SQ_OK && !done && round < MAX_ROUNDS; round++) {
         int nsplit = 0, nbad = 0;
