@@ -49,6 +49,13 @@ const char *cad_model_face_surface(const cad_model *model, int index);
  * else 0 (and *note is set to a one-line explanation, else to NULL). */
 int cad_model_default_face(const cad_model *model, const char **note);
 
+/* Move the model rigidly and scale it: x -> scale * R(axis, angle) x + t,
+ * R the rotation by angle (radians) about the unit axis[3] through the
+ * origin.  Faces extracted afterwards see the moved geometry (robustness
+ * tests: singular points must move with the shape). */
+sq_status cad_model_transform(cad_model *model, const double axis[3], double angle, double scale,
+                              const double t[3], sq_error *err);
+
 /* ---- a planar face in its 2D frame --------------------------------------- */
 
 typedef struct cad_face cad_face; /* opaque */

@@ -11,6 +11,7 @@
 #include "cad_private.hxx"
 
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepBuilderAPI_Transform.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
@@ -27,6 +28,8 @@
 #include <TopAbs.hxx>
 #include <TopExp.hxx>
 #include <TopoDS.hxx>
+#include <gp_Ax1.hxx>
+#include <gp_Trsf.hxx>
 #include <gp_Vec.hxx>
 
 #include <sys/stat.h>
@@ -367,6 +370,25 @@ const char *cad_model_face_surface(const cad_model *model, int index)
 {
     if (!model || index < 0 || index >= (int)model->surface.size()) return NULL;
     return model->surface[(size_t)index].c_str();
+}
+
+sq_status cad_model_transform(cad_model *model, const double axis[3], double angle, double scale,
+                              const double t[3], sq_error *err)
+{
+    if (!model || !axis || !t || !(scale > 0.0))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "cad_model_transform: bad arguments (scale %g)", scale);
+    try {
+        gp_Trsf rot, scl, tr;
+        rot.SetRotation(gp_Ax1(gp_Pnt(0, 0, 0), gp_Dir(axis[0], axis[1], axis[2])), angle);
+        scl.SetScale(gp_Pnt(0, 0, 0), scale);
+        tr.SetTranslation(gp_Vec(t[0], t[1], t[2]));
+        gp_Trsf all = tr * scl * rot;
+        model->shape = BRepBuilderAPI_Transform(model->shape, all, Standard_True).Shape();
+        model->faces.Clear();
+        TopExp::MapShapes(model->shape, TopAbs_FACE, model->faces);
+        return SQ_OK;
+    }
+    SQCAD_CATCH(err)
 }
 
 int cad_model_default_face(const cad_model *model, const char **note)

@@ -8,13 +8,6 @@
 
 #include <stdlib.h>
 
-/* Element e's geometry at (r, s). */
-static void map_point(const sem_tri_lagrange *lag, const sem_tri_mesh *m, int e, double r,
-                      double s, double x[2])
-{
-    sem_tri_geom_map(lag, &m->gxy[2 * (size_t)m->nodes_per_tri * (size_t)e], r, s, x, NULL);
-}
-
 sq_status sq_write_tri_vtu(const char *path, const sq_triangulation *t, sq_error *err)
 {
     const char *const names[] = {"scaled_jacobian"};

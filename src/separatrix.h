@@ -1,0 +1,37 @@
+/* semquad — separatrices: polylines traced through a cross field from the
+ * singular points and the corners that take two or more quads (Marcon 2019
+ * §2.4, §3.3). */
+#ifndef SQ_SEPARATRIX_H
+#define SQ_SEPARATRIX_H
+
+#include "sq_status.h"
+
+typedef enum {
+    SQ_END_OPEN = 0,  /* not finished (length bound reached: a limit cycle?) */
+    SQ_END_SINGULAR,  /* at singular point `id` (exactly its position) */
+    SQ_END_CORNER,    /* at face vertex `id` (sq_face_info.vertices, exactly) */
+    SQ_END_BOUNDARY   /* on CAD edge `id` at arc length `s` (exactly on it) */
+} sq_end_kind;
+
+typedef struct {
+    sq_end_kind kind;
+    int id;
+    double s;         /* SQ_END_BOUNDARY: arc length on edge id */
+} sq_sep_end;
+
+typedef struct {
+    int npts;
+    double *xy;        /* 2*npts, from start to end */
+    sq_sep_end start, end;
+    double start_angle; /* direction at the start (radians) */
+    int merged;        /* 1: the result of merging two separatrices that met */
+} sq_separatrix;
+
+typedef struct {
+    int n, cap;
+    sq_separatrix *s;
+} sq_separatrix_set;
+
+void sq_separatrix_set_free(sq_separatrix_set *set); /* frees, zeroes the struct */
+
+#endif

@@ -1,0 +1,53 @@
+/* semquad — tracing separatrices through a cross field (Marcon 2019 §2.4,
+ * §3.3, Algorithm 1).
+ *
+ * design:
+ *  1. start directions: V at each singular point of valence V, n - 1 into
+ *     the interior at each face vertex taking n >= 2 quads; each converged
+ *     with Algorithm 1 (bisection on the mismatch between the ray direction
+ *     and the cross branch along it), initial guesses 2π/V apart (corners:
+ *     the interior angle over n);
+ *  2. all separatrices advanced together with 4th-order Adams–Bashforth
+ *     (order ramped 1 -> 4 at the start), the branch of the cross nearest to
+ *     the previous direction chosen at every evaluation (so jump lines of ψ
+ *     are crossed continuously), step tied to the local element size;
+ *  3. a separatrix stops on the boundary (the crossing with the CAD curve
+ *     found exactly and the end snapped onto it), at a singular point
+ *     (capture radius: the end snapped onto it), or on meeting another one
+ *     head-on (fronts within one step, directions opposite); two that meet
+ *     are merged with Marcon's cos^2/sin^2 weights so both start angles are
+ *     kept; `merge_distance` > 1 allows aggressive merging (§3.3.1);
+ *  4. a separatrix longer than max_length ends SQ_END_OPEN (a limit cycle
+ *     for the layout's correction to cut). */
+#ifndef SQ_TRACE_H
+#define SQ_TRACE_H
+
+#include "cross_field.h"
+#include "face_info.h"
+#include "separatrix.h"
+#include "singularity.h"
+
+typedef struct {
+    double step_rel;       /* step = step_rel * local element size (default 0.05) */
+    double capture_rel;    /* capture radius at singular points, in steps (default 2) */
+    double merge_distance; /* in steps: fronts closer than this meet (default 1) */
+    double max_length;     /* length bound; <= 0: 4 * perimeter of the face */
+} sq_trace_options;
+
+void sq_trace_options_default(sq_trace_options *opt);
+
+/* vertex_quads[info->nvertices]: quads at each face vertex (n). */
+sq_status sq_trace_separatrices(const sq_cross_field *field, const cad_face *face,
+                                const sq_face_info *info, const int *vertex_quads, int nsing,
+                                const sq_singularity *sing, const sq_trace_options *opt,
+                                sq_separatrix_set *out, sq_error *err);
+
+/* Continue separatrix k of set from its last point along the field (used by
+ * layout repairs), with the same stopping rules; other separatrices of the
+ * set are obstacles it may end on. */
+sq_status sq_trace_continue(const sq_cross_field *field, const cad_face *face,
+                            const sq_face_info *info, int nsing, const sq_singularity *sing,
+                            const sq_trace_options *opt, sq_separatrix_set *set, int k,
+                            sq_error *err);
+
+#endif
