@@ -72,6 +72,7 @@ sq_status sq_field_analyse(const cad_face *face, const sq_field_options *opt,
         tri.extra_xy = graded;
         double size = tri.size > 0.0 ? tri.size : sqrt(fabs(out->info.area)) / 3.0;
         tri.extra_size = opt->grading * size;
+        tri.extra_growth = 1.0; /* hp: element size proportional to the distance */
     }
     if (st == SQ_OK) st = sq_triangulate(face, &tri, &out->tri, err);
     free(graded);

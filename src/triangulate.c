@@ -50,20 +50,20 @@ static sq_status bdisc_insert(bdisc *b, int e, double s, sq_error *err)
 }
 
 typedef struct {
-    double size, extra_size;
+    double size, extra_size, growth;
     int nextra;
     const double *extra_xy;
 } size_ctx;
 
-/* Graded size around the extra points: extra_size there, growing at rate
- * 1/2 with distance, capped by the global size. */
+/* Graded size around the extra points: extra_size there, growing linearly
+ * with distance (geometric layers), capped by the global size. */
 static double graded_size(const double xy[2], void *p)
 {
     const size_ctx *c = p;
     double h = c->size;
     for (int i = 0; i < c->nextra; i++) {
         double d = hypot(xy[0] - c->extra_xy[2 * i], xy[1] - c->extra_xy[2 * i + 1]);
-        double hi = c->extra_size + 0.5 * d;
+        double hi = c->extra_size + c->growth * d;
         if (hi < h) h = hi;
     }
     return h;
@@ -406,8 +406,8 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
     SQ_TRY(sq_face_info_compute(face, &info, err));
     double size = opt->size > 0.0 ? opt->size : sqrt(fabs(info.area)) / 3.0;
     sq_face_info_free(&info);
-    size_ctx sc = {size, opt->extra_size > 0.0 ? opt->extra_size : size / 8.0, opt->nextra,
-                   opt->extra_xy};
+    size_ctx sc = {size, opt->extra_size > 0.0 ? opt->extra_size : size / 8.0,
+                   opt->extra_growth > 0.0 ? opt->extra_growth : 0.5, opt->nextra, opt->extra_xy};
     bdisc b = {0};
     bpoly p = {0};
     cad_cdt_output o = {0};

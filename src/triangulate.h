@@ -27,7 +27,8 @@ typedef struct {
     int nextra;           /* points to insert as vertices, 2*nextra in extra_xy */
     const double *extra_xy;
     double extra_size;    /* size at the extra points (<= 0: size/8); grows
-                             with distance at rate 1/2 up to size */
+                             with distance at rate extra_growth up to size */
+    double extra_growth;  /* <= 0: 1/2 */
 } sq_tri_options;
 
 void sq_tri_options_default(sq_tri_options *opt);

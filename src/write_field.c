@@ -150,7 +150,9 @@ static void draw_contour(sq_svg *svg, const sq_field_analysis *a, const sem_tri_
                     int np = 0;
                     for (int q = 0; q < 3 && np < 2; q++) {
                         int w = (q + 1) % 3;
-                        if ((val[q] < 0) == (val[w] < 0)) continue;
+                        /* round-off around an identically zero boundary value
+                         * is not a contour */
+                        if ((val[q] < -1e-10) == (val[w] < -1e-10)) continue;
                         double t = val[q] / (val[q] - val[w]);
                         sem_tri_geom_map(lag, g, rs[q][0] + t * (rs[w][0] - rs[q][0]),
                                          rs[q][1] + t * (rs[w][1] - rs[q][1]), &pts[2 * np], NULL);
