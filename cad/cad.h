@@ -143,6 +143,60 @@ typedef struct {
 sq_status cad_cdt_mesh(const cad_cdt_input *in, cad_cdt_output *out, sq_error *err);
 void cad_cdt_output_free(cad_cdt_output *out); /* frees the arrays, zeroes the struct */
 
+
+/* ---- cutting a face into sub-faces (cad_split.cpp) ------------------------ */
+
+typedef struct cad_split cad_split; /* opaque: a face cut into sub-faces */
+
+/* Cut face `face_index` of `model` along ncurves curves.  Curve k has
+ * npts[k] >= 2 points, xy[k][2*i], xy[k][2*i+1], in the face's 2D frame;
+ * `face` is that face made by cad_face_create (its frame is used; NULL: made
+ * here).  Each curve becomes one B-spline edge: the segment for 2 points,
+ * else the cubic interpolating its points.  Its first and last points must
+ * lie on the face boundary (within 1e-7 x the face's size: they are snapped
+ * onto it, corners exactly), or coincide with another curve's end point (the
+ * same coordinates within that tolerance: several curves ending at one
+ * singular point share one vertex), or lie on another curve (a T-junction);
+ * its other points must lie in the face.  Curves may cross one another: they
+ * are cut where they meet.  The face is split by OpenCASCADE's Boolean
+ * splitter; the sub-faces' areas add up to the face's (checked, 1e-8).
+ * Errors: SQ_ERR_USAGE (bad arguments, `face` not that face), SQ_ERR_LAYOUT
+ * (a dangling end point or curve piece, a point outside the face, a
+ * degenerate curve: the message names the curve), SQ_ERR_INTERNAL (the
+ * split failed).  *out stays NULL on failure. */
+sq_status cad_face_split(const cad_model *model, int face_index, const cad_face *face,
+                         int ncurves, const int *npts, const double *const *xy, cad_split **out,
+                         sq_error *err);
+void cad_split_free(cad_split **s); /* NULL-safe, NULLs *s */
+
+int cad_split_num_faces(const cad_split *s);
+
+/* Area of sub-face i (Green's theorem on its edges, adaptive Gauss-Legendre:
+ * exact to rounding on the B-spline edges); 0 if i is out of range. */
+double cad_split_face_area(const cad_split *s, int i);
+
+/* Area of the face before the split, computed the same way. */
+double cad_split_total_area(const cad_split *s);
+
+/* Corners of sub-face i: the vertices of its boundary where the edges before
+ * and after meet at an angle differing from 180 degrees by more than tol_deg
+ * (smooth joins, e.g. where a curve's foot splits an arc, are not corners).
+ * Returns their number (-1 if i is out of range) and, if xy is not NULL,
+ * the first min(number, max) of them in xy[2*j] in the 2D frame, wire by
+ * wire in the order of travel along each. */
+int cad_split_face_corners(const cad_split *s, int i, double tol_deg, double *xy, int max);
+int cad_split_face_num_corners(const cad_split *s, int i, double tol_deg);
+
+/* Index of the sub-face containing point xy (2D frame; a point on a shared
+ * edge gives one of its faces), -1 if none. */
+int cad_split_locate(const cad_split *s, const double xy[2]);
+
+/* Write the sub-faces as one STEP shell, in the file's 3D frame and length
+ * unit (no scaling), so that cad_model_read gives them back as
+ * cad_split_num_faces faces.  Atomic: written to a temporary file beside
+ * `path`, then renamed.  SQ_ERR_OUTPUT on failure (no file left behind). */
+sq_status cad_split_write_step(const cad_split *s, const char *path, sq_error *err);
+
 #ifdef __cplusplus
 }
 #endif
