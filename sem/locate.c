@@ -59,7 +59,7 @@ int sem_locator_invert(const sem_locator *loc, int e, const double xy[2], double
         rs[1] = a[4] * dx + a[5] * dy;
         return 0;
     }
-    double r = 1.0 / 3.0, s = 1.0 / 3.0;
+    double r = 1.0 / 3.0, s = 1.0 / 3.0, prev = HUGE_VAL;
     for (int it = 0; it < LOC_NEWTON_MAX; ++it) {
         double x[2], J[4];
         const double det = sem_locator_map(loc, e, r, s, x, J);
@@ -68,11 +68,16 @@ int sem_locator_invert(const sem_locator *loc, int e, const double xy[2], double
         const double d0 = (J[3] * fx - J[1] * fy) / det, d1 = (-J[2] * fx + J[0] * fy) / det;
         r += d0;
         s += d1;
-        if (fabs(d0) + fabs(d1) < 1e-13) {
+        /* Converged, or stalled at round-off: on a small element far from
+         * the origin the coordinates' rounding alone is above 1e-13 in
+         * reference units, so a step that no longer halves is the end. */
+        const double step = fabs(d0) + fabs(d1);
+        if (step < 1e-13 || (step < 1e-9 && step > 0.5 * prev)) {
             rs[0] = r;
             rs[1] = s;
             return 0;
         }
+        prev = step;
         if (!(fabs(r) < LOC_FAR && fabs(s) < LOC_FAR)) break;
     }
     rs[0] = r;
