@@ -3,6 +3,7 @@
 #include <errno.h>
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 sq_status sq_cli_int(const char *opt, const char *val, int lo, int hi, int *out, sq_error *err)
 {
@@ -26,6 +27,15 @@ sq_status sq_cli_double(const char *opt, const char *val, double lo, double hi, 
         return SQ_FAIL(err, SQ_ERR_USAGE, "%s expects a number in [%g, %g], got '%s'", opt, lo, hi,
                        val);
     *out = v;
+    return SQ_OK;
+}
+
+sq_status sq_cli_method(const char *val, sq_method *out, sq_error *err)
+{
+    if (!strcmp(val, "auto")) *out = SQ_METHOD_AUTO;
+    else if (!strcmp(val, "cg")) *out = SQ_METHOD_CG;
+    else if (!strcmp(val, "dg")) *out = SQ_METHOD_DG;
+    else return SQ_FAIL(err, SQ_ERR_USAGE, "--method expects auto, cg or dg, got '%s'", val);
     return SQ_OK;
 }
 

@@ -3,12 +3,16 @@
 #define SQ_CLI_H
 
 #include "cad.h"
+#include "guiding_field.h"
 
 /* Parse a whole-string integer/real option value; SQ_ERR_USAGE naming the
  * option otherwise. */
 sq_status sq_cli_int(const char *opt, const char *val, int lo, int hi, int *out, sq_error *err);
 sq_status sq_cli_double(const char *opt, const char *val, double lo, double hi, double *out,
                         sq_error *err);
+
+/* --method value: auto, cg or dg. */
+sq_status sq_cli_method(const char *val, sq_method *out, sq_error *err);
 
 /* Value of option argv[*i] (advances *i); SQ_ERR_USAGE if missing. */
 sq_status sq_cli_value(int argc, char **argv, int *i, const char **val, sq_error *err);
@@ -22,5 +26,7 @@ sq_status sq_cli_open_face(const char *path, int face, cad_model **model, cad_fa
 sq_status sq_cmd_info(int argc, char **argv, sq_error *err);
 sq_status sq_cmd_triangulate(int argc, char **argv, sq_error *err);
 sq_status sq_cmd_field(int argc, char **argv, sq_error *err);
+sq_status sq_cmd_layout(int argc, char **argv, sq_error *err);
+sq_status sq_cmd_converge(int argc, char **argv, sq_error *err);
 
 #endif

@@ -1,15 +1,79 @@
 /* semquad field FILE [--face N] [--order P] [--method auto|cg|dg] [--size H]
+ *   [--singularities FILE|natural] [--allow-misaligned]
  *   [--report out.json] [--vtu out.vtu] [--svg out.svg] [--quiet] */
 #include "cli.h"
 #include "write_field.h"
+#include "write_htheta.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
+/* The H/θ path (Jezdimirović 2021 §4–5): the pattern from a file or from
+ * the guiding field (natural), then H, the branch cut and θ. */
+static sq_status field_htheta(const char *path, int face, const cad_face *f,
+                              const sq_field_options *opt, const char *sing, int allow_misaligned,
+                              const char *vtu, const char *svg, const char *report, int quiet,
+                              double t_read, sq_error *err)
+{
+    sq_pattern pat;
+    sq_status st;
+    if (!strcmp(sing, "natural")) {
+        sq_field_analysis an;
+        SQ_TRY(sq_field_analyse(f, opt, &an, err));
+        st = sq_pattern_from_analysis(&an, &pat, err);
+        sq_field_analysis_free(&an);
+        SQ_TRY(st);
+    } else {
+        SQ_TRY(sq_pattern_read(sing, &pat, err));
+    }
+    sq_htheta_options ho;
+    sq_htheta_options_default(&ho);
+    ho.order = opt->order;
+    ho.tri.order = opt->tri.order;
+    ho.tri.size = opt->tri.size;
+    sq_htheta ht;
+    st = sq_htheta_compute(f, &pat, &ho, &ht, err);
+    sq_pattern_free(&pat);
+    SQ_TRY(st);
+    if (vtu) st = sq_write_htheta_vtu(vtu, &ht, err);
+    if (st == SQ_OK && svg) st = sq_write_htheta_svg(svg, &ht, err);
+    if (st == SQ_OK && report) st = sq_write_htheta_report(report, path, face, &ht, t_read, err);
+    if (st == SQ_OK && !quiet) {
+        printf("%s face %d: H-theta field CG P=%d on %d triangles (%ld dofs), branch cut of %d "
+               "edges\n",
+               path, face, ht.h.order, ht.tri.mesh->ntris, ht.h.ndofs, ht.theta.cut.nedges);
+        printf("  Gauss-Bonnet: sum(4 - V) + sum(2 - n) = %d = 4 chi\n", ht.balance.lhs);
+        printf("  %d singular point%s (jump of theta around each, expected (pi/2)(4 - V)):\n",
+               ht.npoints, ht.npoints == 1 ? "" : "s");
+        for (int k = 0; k < ht.npoints; k++)
+            printf("    (%.9g, %.9g) valence %d %s: jump %.12f (error %.2e)\n", ht.points[k].x,
+                   ht.points[k].y, ht.points[k].valence,
+                   ht.points[k].origin == SQ_ORIGIN_IMPOSED ? "imposed" : "critical-point",
+                   ht.points[k].jump, ht.points[k].jump - ht.points[k].c);
+        for (int l = 0; l < ht.nloops; l++) {
+            const sq_htheta_loop *L = &ht.loops[l];
+            printf("  loop %d (%s): misalignment %.6f deg", l, l ? "hole" : "outer",
+                   L->misalignment * 180.0 / M_PI);
+            if (l) printf(", jump %.9f (expected %.9f, turning %.9f)", L->jump, L->expected_jump,
+                          L->turning);
+            printf(": %s\n", L->aligned ? "aligned" : "MISALIGNED");
+        }
+    }
+    if (st == SQ_OK && !quiet) {
+        sq_error w;
+        if (sq_htheta_check_alignment(&ht, 0, &w) != SQ_OK)
+            fprintf(stderr, "semquad: warning: %s%s\n", w.msg,
+                    allow_misaligned ? " (proceeding: --allow-misaligned)" : "");
+    }
+    sq_htheta_free(&ht);
+    return st;
+}
+
 sq_status sq_cmd_field(int argc, char **argv, sq_error *err)
 {
-    const char *path = NULL, *vtu = NULL, *svg = NULL, *report = NULL, *val;
-    int face = -1, quiet = 0, tri_order = 0;
+    const char *path = NULL, *vtu = NULL, *svg = NULL, *report = NULL, *val, *sing = NULL;
+    int face = -1, quiet = 0, tri_order = 0, allow_misaligned = 0;
     sq_field_options opt;
     sq_field_options_default(&opt);
     for (int i = 0; i < argc; i++) {
@@ -25,10 +89,7 @@ sq_status sq_cmd_field(int argc, char **argv, sq_error *err)
             SQ_TRY(sq_cli_int(a, val, 1, 12, &tri_order, err));
         } else if (!strcmp(a, "--method")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            if (!strcmp(val, "auto")) opt.method = SQ_METHOD_AUTO;
-            else if (!strcmp(val, "cg")) opt.method = SQ_METHOD_CG;
-            else if (!strcmp(val, "dg")) opt.method = SQ_METHOD_DG;
-            else return SQ_FAIL(err, SQ_ERR_USAGE, "--method expects auto, cg or dg, got '%s'", val);
+            SQ_TRY(sq_cli_method(val, &opt.method, err));
         } else if (!strcmp(a, "--size")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_double(a, val, 1e-300, 1e300, &opt.tri.size, err));
@@ -38,6 +99,10 @@ sq_status sq_cmd_field(int argc, char **argv, sq_error *err)
             SQ_TRY(sq_cli_value(argc, argv, &i, &svg, err));
         } else if (!strcmp(a, "--report")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &report, err));
+        } else if (!strcmp(a, "--singularities")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &sing, err));
+        } else if (!strcmp(a, "--allow-misaligned")) {
+            allow_misaligned = 1;
         } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
             quiet = 1;
         } else if (a[0] == '-' && a[1]) {
@@ -59,6 +124,13 @@ sq_status sq_cmd_field(int argc, char **argv, sq_error *err)
     SQ_TRY(sq_cli_open_face(path, face, &m, &f, &face, &note, err));
     double t_read = sq_now() - t0;
     if (note && !quiet) fprintf(stderr, "semquad: note: %s\n", note);
+    if (sing) {
+        sq_status hs = field_htheta(path, face, f, &opt, sing, allow_misaligned, vtu, svg, report,
+                                    quiet, t_read, err);
+        cad_face_free(&f);
+        cad_model_free(&m);
+        return hs;
+    }
     sq_field_analysis an;
     sq_status st = sq_field_analyse(f, &opt, &an, err);
     if (st == SQ_OK && vtu) st = sq_write_field_vtu(vtu, &an, err);

@@ -1,6 +1,7 @@
 #include "cross_field.h"
 
 #include <math.h>
+#include <stddef.h>
 
 static int guiding_direction(void *ctx, const double x[2], int *elem, double *theta)
 {

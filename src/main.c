@@ -29,6 +29,20 @@ static const char *usage =
     "      guiding field (u,v) = (cos 4t, sin 4t) of order P (1..16, default 8), its\n"
     "      critical points with valences, corner valences, Poincare-Hopf check. auto\n"
     "      uses CG when every corner is a multiple of 90 deg, DG otherwise.\n"
+    "  converge FILE [--face N] [--solution NAME] [--method cg|dg|both] [--orders A-B]\n"
+    "           [--sizes h1,h2,...] [--geom-order G] [--csv out.csv] [--svg out.svg] [--quiet]\n"
+    "      convergence study of the CG/DG Poisson solvers: -lap u = 0 with u = the exact\n"
+    "      harmonic solution NAME (exp-sin: e^x sin y (default), re-z5: Re (x+iy)^5,\n"
+    "      poly, sin-sinh) on the whole boundary; every P in A-B (default 1-12) on every\n"
+    "      size (default: automatic), geometry order max(P,8) capped at 12 unless G.\n"
+    "      Table on stdout; CSV method,P,h,dofs,L2,H1; SVG log-log plot of the errors\n"
+    "      against dofs (p-refinement, or h-refinement per P with several sizes).\n"
+    "  layout FILE [--face N] [--order P] [--method auto|cg|dg] [--size H]\n"
+    "         [--merge-distance K] [-o patches.step] [--svg F] [--report F] [--quiet]\n"
+    "      quad layout: separatrices traced from the singular points and corners\n"
+    "      (Adams-Bashforth 4), merged (K steps, default 1; larger: aggressive),\n"
+    "      corrected until every patch is a quad; the face split into the patches\n"
+    "      (STEP). Exit 6 if no valid layout can be made.\n"
     "  help                 this text\n"
     "  --version            the version\n"
     "\n"
@@ -58,6 +72,10 @@ int main(int argc, char **argv)
         return 0;
     } else if (!strcmp(cmd, "info")) {
         st = sq_cmd_info(argc - 2, argv + 2, &err);
+    } else if (!strcmp(cmd, "converge")) {
+        st = sq_cmd_converge(argc - 2, argv + 2, &err);
+    } else if (!strcmp(cmd, "layout")) {
+        st = sq_cmd_layout(argc - 2, argv + 2, &err);
     } else if (!strcmp(cmd, "field")) {
         st = sq_cmd_field(argc - 2, argv + 2, &err);
     } else if (!strcmp(cmd, "triangulate")) {

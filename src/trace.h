@@ -32,7 +32,15 @@ typedef struct {
     double capture_rel;    /* capture radius at singular points, in steps (default 2) */
     double merge_distance; /* in steps: fronts closer than this meet (default 1) */
     double max_length;     /* length bound; <= 0: 4 * perimeter of the face */
+    double tol;            /* Algorithm 1 tolerance on the angle (default 1e-9) */
 } sq_trace_options;
+
+/* Counters filled by sq_trace_separatrices (may be NULL). */
+typedef struct {
+    int traced;   /* separatrices started */
+    int merges;   /* pairs merged (each pair becomes one) */
+    long steps;   /* integration steps (field evaluations along the lines) */
+} sq_trace_stats;
 
 void sq_trace_options_default(sq_trace_options *opt);
 
@@ -41,6 +49,28 @@ sq_status sq_trace_separatrices(const sq_cross_field *field, const cad_face *fac
                                 const sq_face_info *info, const int *vertex_quads, int nsing,
                                 const sq_singularity *sing, const sq_trace_options *opt,
                                 sq_separatrix_set *out, sq_error *err);
+
+/* Same, with counters (stats may be NULL). */
+sq_status sq_trace_separatrices_stats(const sq_cross_field *field, const cad_face *face,
+                                      const sq_face_info *info, const int *vertex_quads,
+                                      int nsing, const sq_singularity *sing,
+                                      const sq_trace_options *opt, sq_separatrix_set *out,
+                                      sq_trace_stats *stats, sq_error *err);
+
+/* Marcon 2019 Algorithm 1: from the guess alpha0, the direction alpha of a
+ * ray from p0 such that the cross at p0 + c (cos alpha, sin alpha) has a
+ * branch along the ray (fixed-point iteration, |Δα| <= tol). */
+sq_status sq_trace_start_direction(const sq_cross_field *field, const double p0[2], double c,
+                                   double alpha0, double tol, double *alpha, sq_error *err);
+
+/* One streamline from p0 with start direction alpha0 (not refined), with the
+ * stopping rules above except meeting (no other lines); sing[] are singular
+ * points it may end on (p0 itself is left first).  out->start is
+ * SQ_END_OPEN/-1; the caller may set it.  out->xy is allocated. */
+sq_status sq_trace_streamline(const sq_cross_field *field, const cad_face *face,
+                              const sq_face_info *info, int nsing, const sq_singularity *sing,
+                              const sq_trace_options *opt, const double p0[2], double alpha0,
+                              sq_separatrix *out, long *steps, sq_error *err);
 
 /* Continue separatrix k of set from its last point along the field (used by
  * layout repairs), with the same stopping rules; other separatrices of the

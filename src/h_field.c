@@ -1,0 +1,191 @@
+#include "h_field.h"
+
+#include "gauss.h"
+#include "poisson.h"
+#include "tri_quad.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void sq_h_field_free(sq_h_field *h)
+{
+    if (!h) return;
+    free(h->xy);
+    free(h->c);
+    sem_field_evaluator_free(&h->ev);
+    sem_field_free(&h->hr);
+    memset(h, 0, sizeof *h);
+}
+
+double sq_h_singular(const sq_h_field *h, const double x[2], double grad[2])
+{
+    double v = 0.0;
+    if (grad) grad[0] = grad[1] = 0.0;
+    for (int j = 0; j < h->npoints; j++) {
+        const double dx = x[0] - h->xy[2 * j], dy = x[1] - h->xy[2 * j + 1];
+        const double r2 = dx * dx + dy * dy, a = h->c[j] / (2.0 * M_PI);
+        v += 0.5 * a * log(r2);
+        if (grad) {
+            grad[0] += a * dx / r2;
+            grad[1] += a * dy / r2;
+        }
+    }
+    return v;
+}
+
+double sq_h_field_eval_ref(const sq_h_field *h, int e, double r, double s, double x[2],
+                           double grad[2])
+{
+    double v, g[2], xx[2], gs[2];
+    sem_field_evaluator_eval_ref(h->ev, e, r, s, &v, g, xx);
+    v += sq_h_singular(h, xx, gs) + h->shift;
+    if (grad) {
+        grad[0] = g[0] + gs[0];
+        grad[1] = g[1] + gs[1];
+    }
+    if (x) x[0] = xx[0], x[1] = xx[1];
+    return v;
+}
+
+typedef struct {
+    const cad_face *face;
+    const sq_h_field *h;
+    double gshift; /* constant removed from the flux */
+    sq_status st;
+    sq_error *err;
+} bdata;
+
+static sem_bc_kind all_neumann(int tag, void *ctx)
+{
+    (void)tag;
+    (void)ctx;
+    return SEM_BC_NEUMANN;
+}
+
+/* ∂H_r/∂ν = κ_g − ∂H_s/∂ν (eq. 12 with the singular part moved over) */
+static double hr_flux(const double x[2], const double n[2], int tag, void *ctx)
+{
+    bdata *b = ctx;
+    double s, kappa = 0.0, gs[2];
+    if (b->st == SQ_OK) {
+        b->st = cad_face_edge_project(b->face, tag, x, &s, NULL, NULL, b->err);
+        if (b->st == SQ_OK) b->st = cad_face_edge_eval(b->face, tag, s, NULL, NULL, &kappa, b->err);
+    }
+    sq_h_singular(b->h, x, gs);
+    return kappa - (gs[0] * n[0] + gs[1] * n[1]) - b->gshift;
+}
+
+/* ∮ g and ∮ 1 over the mesh boundary (Gauss–Legendre on every boundary
+ * element edge, exact geometry of the mesh). */
+static sq_status boundary_integral(const sem_locator *loc, const sem_tri_mesh *m, int nq, bdata *b,
+                                   double *ig, double *iabs, double *len, sq_error *err)
+{
+    double t[64], w[64];
+    SQ_TRY(sem_gauss_jacobi(nq, 0.0, 0.0, t, w, err));
+    *ig = *iabs = *len = 0.0;
+    for (int h = 0; h < 3 * m->ntris; h++) {
+        if (m->neigh[h] >= 0) continue;
+        const int e = h / 3, k = h % 3;
+        for (int q = 0; q < nq; q++) {
+            const double u = 0.5 * (1.0 + t[q]);
+            double rs[2], d[2], x[2], J[4];
+            if (k == 0) rs[0] = u, rs[1] = 0, d[0] = 1, d[1] = 0;
+            else if (k == 1) rs[0] = 1 - u, rs[1] = u, d[0] = -1, d[1] = 1;
+            else rs[0] = 0, rs[1] = 1 - u, d[0] = 0, d[1] = -1;
+            sem_locator_map(loc, e, rs[0], rs[1], x, J);
+            const double tx = J[0] * d[0] + J[1] * d[1], ty = J[2] * d[0] + J[3] * d[1];
+            const double ds = hypot(tx, ty), n[2] = {ty / ds, -tx / ds};
+            const double g = hr_flux(x, n, m->btag[h], b), wq = 0.5 * w[q] * ds;
+            *ig += wq * g;
+            *iabs += wq * fabs(g);
+            *len += wq;
+        }
+        SQ_TRY(b->st);
+    }
+    return SQ_OK;
+}
+
+sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
+                           const sem_tri_mesh *mesh, const sem_locator *loc, int order,
+                           int npoints, const double *xy, const int *valence, const int *quads,
+                           sq_h_field *out, sq_error *err)
+{
+    memset(out, 0, sizeof *out);
+    out->mesh = mesh;
+    out->order = order;
+    out->npoints = npoints;
+    out->xy = malloc(sizeof(double) * (2 * (size_t)npoints + 1));
+    out->c = malloc(sizeof(double) * ((size_t)npoints + 1));
+    sem_point_source *ps = malloc(sizeof *ps * ((size_t)info->nvertices + 1));
+    sem_poisson *solver = NULL;
+    sem_tri_quad *quad = NULL;
+    sq_status st = SQ_OK;
+    if (!out->xy || !out->c || !ps) {
+        st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        goto done;
+    }
+    for (int j = 0; j < npoints; j++) {
+        out->xy[2 * j] = xy[2 * j];
+        out->xy[2 * j + 1] = xy[2 * j + 1];
+        out->c[j] = M_PI_2 * (4 - valence[j]); /* c_j = (π/2)(4 − V_j) */
+    }
+    /* corner point fluxes s_i = n_i π/2 − α_i at the mesh vertex there */
+    int nps = 0;
+    double ssum = 0.0, sabs = 0.0;
+    for (int i = 0; i < info->nvertices; i++) {
+        const sq_vertex *v = &info->vertices[i];
+        const double s = quads[i] * M_PI_2 - v->angle_deg * M_PI / 180.0;
+        if (fabs(s) < 1e-12) continue;
+        int found = 0;
+        for (int h = 0; h < 3 * mesh->ntris && !found; h++) {
+            const int mv = mesh->tri[h];
+            if (hypot(mesh->vxy[2 * mv] - v->x, mesh->vxy[2 * mv + 1] - v->y) > 1e-9 *
+                    (1.0 + fabs(v->x) + fabs(v->y)))
+                continue;
+            const int k = h % 3;
+            ps[nps] = (sem_point_source){h / 3, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0, s};
+            nps++;
+            found = 1;
+        }
+        if (!found) {
+            st = SQ_FAIL(err, SQ_ERR_INTERNAL, "corner (%g, %g) is not a mesh vertex", v->x, v->y);
+            goto done;
+        }
+        ssum += s;
+        sabs += fabs(s);
+    }
+    out->ncorner_sources = nps;
+    bdata b = {face, out, 0.0, SQ_OK, err};
+    double ig, iabs, len;
+    if ((st = boundary_integral(loc, mesh, order + 8, &b, &ig, &iabs, &len, err)) != SQ_OK)
+        goto done;
+    out->imbalance = ig + ssum;
+    out->data_size = iabs + sabs;
+    b.gshift = out->imbalance / len; /* the quadrature residue, spread evenly */
+    if ((st = sem_poisson_create(mesh, order, SEM_CG, all_neumann, NULL, &solver, err)) != SQ_OK)
+        goto done;
+    out->ndofs = sem_poisson_ndofs(solver);
+    if ((st = sem_field_create(mesh, order, 1, &out->hr, err)) != SQ_OK) goto done;
+    sem_poisson_data data = {NULL, NULL, hr_flux, &b, nps, ps};
+    if ((st = sem_poisson_solve(solver, &data, out->hr, err)) != SQ_OK) goto done;
+    if ((st = b.st) != SQ_OK) goto done;
+    if ((st = sem_field_evaluator_create(out->hr, loc, &out->ev, err)) != SQ_OK) goto done;
+    /* zero mean of H = H_s + H_r (H_r has zero mean already) */
+    if ((st = sem_tri_quad_create(2 * order + 4, &quad, err)) != SQ_OK) goto done;
+    double ihs = 0.0, area = 0.0;
+    for (int e = 0; e < mesh->ntris; e++)
+        for (int q = 0; q < quad->npts; q++) {
+            double x[2];
+            const double det = sem_locator_map(loc, e, quad->rs[2 * q], quad->rs[2 * q + 1], x, NULL);
+            ihs += quad->w[q] * det * sq_h_singular(out, x, NULL);
+            area += quad->w[q] * det;
+        }
+    out->shift = -ihs / area;
+done:
+    free(ps);
+    sem_poisson_free(&solver);
+    sem_tri_quad_free(&quad);
+    if (st != SQ_OK) sq_h_field_free(out);
+    return st;
+}

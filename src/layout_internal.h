@@ -1,0 +1,40 @@
+/* semquad — internals shared by layout_graph.c, layout_check.c and
+ * layout_repair.c (not part of the public contract). */
+#ifndef SQ_LAYOUT_INTERNAL_H
+#define SQ_LAYOUT_INTERNAL_H
+
+#include "layout.h"
+
+/* An intersection of two separatrix polylines (a may equal b: a self
+ * crossing).  Positions along a polyline are "segment index + t". */
+typedef struct {
+    int a, b;
+    double pa, pb;     /* positions on a and b */
+    double x, y;
+    int enda, endb;    /* -1: interior; 0: at the start; 1: at the end */
+    double cosang;     /* |cos| of the angle between the two segments */
+} lay_hit;
+
+/* All intersections between the separatrices of set (adjacent segments of
+ * one polyline excluded); tol: coincidence distance.  *hits malloc'ed. */
+sq_status lay_intersections(const sq_separatrix_set *set, double tol, lay_hit **hits, int *nhits,
+                            sq_error *err);
+
+/* (Re)build nodes, edges and patches of layout from its sing, seps and
+ * vertex_quads; frees the previous graph. */
+sq_status lay_graph_build(sq_layout *L, const cad_face *face, const sq_face_info *info,
+                          sq_error *err);
+void lay_graph_clear(sq_layout *L);
+
+/* separatrix-set helpers (the layout owns deep copies) */
+sq_status lay_sep_push(sq_separatrix_set *set, const double *xy, int npts, sq_sep_end start,
+                       sq_sep_end end, sq_error *err);
+void lay_sep_remove(sq_separatrix_set *set, int k);
+void lay_sepset_free(sq_separatrix_set *set);
+sq_status lay_sing_push(sq_layout *L, double x, double y, int valence, sq_lrole role,
+                        sq_error *err);
+
+/* Arc length of polyline xy[npts] up to position pos (segment + t). */
+double lay_poly_arclen(const double *xy, int npts, double pos);
+
+#endif

@@ -1,0 +1,116 @@
+/* semquad — a conforming high-order quadrilateral mesh (plain data), what
+ * `semquad mesh` produces and the writers consume.
+ *
+ * Element (i, j) lattice: each quad of order Q has (Q+1)^2 nodes, node
+ * (i, j), 0 <= i, j <= Q, at local index j*(Q+1) + i; (i, j) = (0,0),
+ * (Q,0), (Q,Q), (0,Q) are its corners, counter-clockwise.  Local side k
+ * joins corner k to corner (k+1)%4.  Nodes are shared between elements
+ * (global indices), so the mesh is conforming by construction.  The node
+ * positions along each side are Gauss–Lobatto–Legendre (nodes = "gll") or
+ * equispaced ("equispaced") in the element's parameter; writers resample to
+ * what their format expects when needed. */
+#ifndef SQ_QUAD_MESH_H
+#define SQ_QUAD_MESH_H
+
+#include "sq_status.h"
+
+#include <stddef.h>
+
+typedef enum { SQ_NODES_GLL = 0, SQ_NODES_EQUISPACED = 1 } sq_node_kind;
+
+typedef struct {
+    int order;           /* Q, 1..10 */
+    sq_node_kind nodes;  /* placement of the nodes along each element side */
+    int nnodes;
+    double *xy;          /* 2*nnodes */
+    int nquads;
+    int *conn;           /* (Q+1)^2 * nquads global node indices, lattice order */
+    int *patch;          /* nquads: layout patch of each quad (or -1) */
+    int nbnd;            /* boundary element sides */
+    int *bnd_quad;       /* nbnd: the quad */
+    int *bnd_side;       /* nbnd: its local side 0..3 */
+    int *bnd_tag;        /* nbnd: CAD edge index (the boundary curve, physical group) */
+    int ntags;           /* boundary curves: tags are 0..ntags-1 */
+} sq_quad_mesh;
+
+sq_status sq_quad_mesh_create(int order, sq_node_kind nodes, int nnodes, int nquads, int nbnd,
+                              sq_quad_mesh **out, sq_error *err);
+void sq_quad_mesh_free(sq_quad_mesh **m); /* NULL-safe, NULLs *m */
+
+/* Lattice index of node (i, j) of a quad of order Q. */
+static inline int sq_quad_node(int Q, int i, int j) { return j * (Q + 1) + i; }
+
+/* Quality (../shared/DESIGN.md, Jezdimirović 2021 Table 1): per quad,
+ * eta = 1 - max_k |alpha_k - π/2| / (π/2) over the four corner angles
+ * (measured with the element's own curved sides at the corners), and the
+ * scaled Jacobian min det J / max det J over the element's nodes. */
+typedef struct {
+    double eta_mean, eta_min, tau_percent; /* tau: % of quads with eta > 0.9 */
+    double min_scaled_jacobian;
+    int irregular_interior; /* interior vertices with valence != 4 */
+    int irregular_boundary; /* boundary vertices with valence != 2 other than corners */
+    /* Added with the writers (docs/formats.md, "Quality").  eta_mean, eta_min
+     * and tau_percent above (and the per-quad eta) are measured on the
+     * straight corner polygon exactly as ../shared/tools/quadstats.py does,
+     * so its output on the MSH file agrees with the report; the same
+     * statistics with the angles between the curved sides' tangents at the
+     * corners (from the element's Lagrange map) are these: */
+    double eta_curved_mean, eta_curved_min, tau_curved_percent;
+    double area;         /* sum over quads of the integral of det J (Gauss, exact) */
+    int inverted;        /* quads with min det J <= 0 at the nodes */
+    int vertices;        /* distinct corner vertices */
+    int boundary_vertices;
+} sq_quad_quality;
+
+/* Per-quad eta[nquads] and sjac[nquads] (either may be NULL) and the
+ * summary. */
+sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,
+                               sq_quad_quality *q, sq_error *err);
+
+/* ---- Added with the writers: element maps, resampling, report ---- */
+
+/* Per-quad eta measured between the tangents of the curved sides at the
+ * corners (the eta_curved_* statistics of sq_quad_mesh_quality). */
+sq_status sq_quad_mesh_eta_curved(const sq_quad_mesh *m, double *eta_curved, sq_error *err);
+
+/* The element map of quad q: x(u, v) = sum_ij x_ij l_i(u) l_j(v), (u, v)
+ * in [0,1]^2, l_i the Lagrange polynomials of the node parameters t_i
+ * (GLL points mapped to [0,1], or i/Q). */
+typedef struct {
+    int order;
+    double t[11]; /* node parameters in [0,1] */
+    double w[11]; /* barycentric weights */
+} sq_quad_basis;
+
+sq_status sq_quad_basis_init(sq_quad_basis *b, int order, sq_node_kind nodes, sq_error *err);
+/* l[Q+1] and (if dl) dl[Q+1] at u. */
+void sq_quad_basis_eval(const sq_quad_basis *b, double u, double *l, double *dl);
+/* x[2] and (if d) d[4] = {x_u, x_v, y_u, y_v} of quad q at (u, v). */
+void sq_quad_mesh_map(const sq_quad_mesh *m, const sq_quad_basis *b, int q, double u, double v,
+                      double x[2], double d[4]);
+
+/* A copy of m with the nodes moved to the other placement (each node
+ * re-evaluated from the element's own Lagrange interpolant at the
+ * corresponding lattice point; connectivity and boundary unchanged). */
+sq_status sq_quad_mesh_resample(const sq_quad_mesh *m, sq_node_kind nodes, sq_quad_mesh **out,
+                                sq_error *err);
+
+/* Order elevation of a linear quad mesh (also: synthetic meshes for tests
+ * and benchmarks).  Coarse vertices vxy[2*nverts], quads[4*nquads] corner
+ * vertices counter-clockwise.  Node (i, j) of quad q is the bilinear point
+ * of its corners at the parameters (t_i, t_j) of `nodes`, then moved by
+ * warp (NULL: identity), so a warp applied to a parameter-space grid gives
+ * nodes exactly on the warped curves (e.g. circles for a polar warp).
+ * Sides used by one quad are the boundary, tagged side_tag[4q+k] (NULL:
+ * all 0, ntags = 1).  Mesh nodes: the coarse vertices first (same
+ * indices), then Q-1 per coarse edge, then (Q-1)^2 per quad. */
+typedef void (*sq_quad_warp_fn)(void *ctx, const double in[2], double out[2]);
+sq_status sq_quad_mesh_elevate(int nverts, const double *vxy, int nquads, const int *quads,
+                               const int *side_tag, int ntags, int order, sq_node_kind nodes,
+                               sq_quad_warp_fn warp, void *ctx, sq_quad_mesh **out,
+                               sq_error *err);
+
+/* One summary line ("320 quads, order 4, ...") into buf. */
+void sq_quad_quality_line(const sq_quad_mesh *m, const sq_quad_quality *q, char *buf, size_t n);
+
+#endif

@@ -1,0 +1,270 @@
+/* semquad — quality of a high-order quad mesh (quad_mesh.h).
+ *
+ * eta (Jezdimirović 2021, Table 1; ../shared/DESIGN.md "Quality") on the
+ * straight corner polygon, computed exactly as ../shared/tools/quadstats.py
+ * does (signed angles w.r.t. the majority orientation, in [0, 2π)), so the
+ * report agrees with that tool on the MSH output; the curved variant uses
+ * the tangents of the element's sides at its corners, from the derivative
+ * of its Lagrange map.  Scaled Jacobian: min det J / max |det J| over the
+ * element's (Q+1)^2 nodes.  Area: Gauss–Legendre with Q+1 points per
+ * direction, exact for the polynomial map (det J has degree 2Q-1 in each
+ * variable). */
+#include "quad_mesh.h"
+
+#include "gauss.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* Angle at c from a (next corner direction) to b (previous), quadstats.py's
+ * convention: atan2(orient * (a x b), a . b) wrapped to [0, 2π). */
+static double corner_angle(double ax, double ay, double bx, double by, double orient)
+{
+    double cr = orient * (ax * by - ay * bx), dt = ax * bx + ay * by;
+    double th = atan2(cr, dt);
+    if (th < 0) th += 2 * M_PI;
+    return th;
+}
+
+static double eta_of(const double ang[4])
+{
+    /* in degrees, as quadstats.py, so the numbers agree to the last bits */
+    const double deg = 180.0 / M_PI;
+    double worst = 0.0;
+    for (int k = 0; k < 4; k++) {
+        double d = fabs(ang[k] * deg - 90.0);
+        if (d > worst) worst = d;
+    }
+    return 1.0 - worst / 90.0;
+}
+
+static const int CORNER[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
+
+static const double *corner_xy(const sq_quad_mesh *m, int q, int k)
+{
+    int Q = m->order;
+    size_t npe = (size_t)(Q + 1) * (Q + 1);
+    int g = m->conn[(size_t)q * npe + sq_quad_node(Q, CORNER[k][0] * Q, CORNER[k][1] * Q)];
+    return &m->xy[2 * (size_t)g];
+}
+
+static double signed_area(const sq_quad_mesh *m, int q)
+{
+    double a = 0.0;
+    for (int k = 0; k < 4; k++) {
+        const double *p = corner_xy(m, q, k), *r = corner_xy(m, q, (k + 1) % 4);
+        a += p[0] * r[1] - r[0] * p[1];
+    }
+    return 0.5 * a;
+}
+
+/* Majority orientation of the corner polygons (quadstats.py). */
+static double orientation(const sq_quad_mesh *m)
+{
+    int npos = 0, nneg = 0;
+    for (int q = 0; q < m->nquads; q++) {
+        double a = signed_area(m, q);
+        npos += a > 0;
+        nneg += a < 0;
+    }
+    return npos >= nneg ? 1.0 : -1.0;
+}
+
+static void straight_angles(const sq_quad_mesh *m, int q, double orient, double ang[4])
+{
+    for (int k = 0; k < 4; k++) {
+        const double *c = corner_xy(m, q, k), *a = corner_xy(m, q, (k + 1) % 4),
+                     *b = corner_xy(m, q, (k + 3) % 4);
+        ang[k] = corner_angle(a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1], orient);
+    }
+}
+
+/* Derivative matrix D[a*(Q+1)+i] = l_i'(t_a) of the element's own nodes. */
+static void diff_matrix(const sq_quad_basis *b, double *D)
+{
+    int Q = b->order;
+    double l[11];
+    for (int a = 0; a <= Q; a++) sq_quad_basis_eval(b, b->t[a], l, &D[a * (Q + 1)]);
+}
+
+/* x_u, x_v (d = {x_u, x_v, y_u, y_v}) at node (a, b) of quad q. */
+static void node_deriv(const sq_quad_mesh *m, const double *D, int q, int a, int b, double d[4])
+{
+    int Q = m->order;
+    const int *c = &m->conn[(size_t)q * (Q + 1) * (Q + 1)];
+    d[0] = d[1] = d[2] = d[3] = 0.0;
+    for (int i = 0; i <= Q; i++) {
+        const double *p = &m->xy[2 * (size_t)c[sq_quad_node(Q, i, b)]];
+        const double *r = &m->xy[2 * (size_t)c[sq_quad_node(Q, a, i)]];
+        double du = D[a * (Q + 1) + i], dv = D[b * (Q + 1) + i];
+        d[0] += du * p[0];
+        d[2] += du * p[1];
+        d[1] += dv * r[0];
+        d[3] += dv * r[1];
+    }
+}
+
+static void curved_angles(const sq_quad_mesh *m, const double *D, int q, double orient,
+                          double ang[4])
+{
+    int Q = m->order;
+    for (int k = 0; k < 4; k++) {
+        double d[4];
+        node_deriv(m, D, q, CORNER[k][0] * Q, CORNER[k][1] * Q, d);
+        double xu[2] = {d[0], d[2]}, xv[2] = {d[1], d[3]}, a[2], b[2];
+        /* tangent towards the next corner (a) and the previous one (b) */
+        switch (k) {
+        case 0: a[0] = xu[0], a[1] = xu[1], b[0] = xv[0], b[1] = xv[1]; break;
+        case 1: a[0] = xv[0], a[1] = xv[1], b[0] = -xu[0], b[1] = -xu[1]; break;
+        case 2: a[0] = -xu[0], a[1] = -xu[1], b[0] = -xv[0], b[1] = -xv[1]; break;
+        default: a[0] = -xv[0], a[1] = -xv[1], b[0] = xu[0], b[1] = xu[1]; break;
+        }
+        ang[k] = corner_angle(a[0], a[1], b[0], b[1], orient);
+    }
+}
+
+sq_status sq_quad_mesh_eta_curved(const sq_quad_mesh *m, double *eta_curved, sq_error *err)
+{
+    sq_quad_basis b;
+    SQ_TRY(sq_quad_basis_init(&b, m->order, m->nodes, err));
+    double D[121], orient = orientation(m);
+    diff_matrix(&b, D);
+    for (int q = 0; q < m->nquads; q++) {
+        double ang[4];
+        curved_angles(m, D, q, orient, ang);
+        eta_curved[q] = eta_of(ang);
+    }
+    return SQ_OK;
+}
+
+static int cmp_u64(const void *a, const void *b)
+{
+    unsigned long long x = *(const unsigned long long *)a, y = *(const unsigned long long *)b;
+    return x < y ? -1 : x > y;
+}
+
+sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,
+                               sq_quad_quality *qq, sq_error *err)
+{
+    memset(qq, 0, sizeof *qq);
+    int Q = m->order, nq = m->nquads;
+    if (nq == 0) return SQ_FAIL(err, SQ_ERR_USAGE, "quality of an empty mesh");
+    sq_quad_basis b;
+    SQ_TRY(sq_quad_basis_init(&b, Q, m->nodes, err));
+    double D[121], orient = orientation(m);
+    diff_matrix(&b, D);
+    /* Gauss–Legendre on [0,1] for the area */
+    int ng = Q + 1;
+    double gx[12], gw[12], gl[12][11], gdl[12][11];
+    SQ_TRY(sem_gauss_jacobi(ng, 0.0, 0.0, gx, gw, err));
+    for (int p = 0; p < ng; p++) {
+        gx[p] = 0.5 * (gx[p] + 1.0);
+        gw[p] *= 0.5;
+        sq_quad_basis_eval(&b, gx[p], gl[p], gdl[p]);
+    }
+    size_t npe = (size_t)(Q + 1) * (Q + 1);
+    int *valence = calloc((size_t)m->nnodes + 1, sizeof *valence);
+    double *angsum = calloc((size_t)m->nnodes + 1, sizeof *angsum);
+    char *bnd = calloc((size_t)m->nnodes + 1, 1);
+    unsigned long long *keys = malloc(4 * (size_t)nq * sizeof *keys);
+    if (!valence || !angsum || !bnd || !keys) {
+        free(valence), free(angsum), free(bnd), free(keys);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    double eta_sum = 0.0, etac_sum = 0.0, eta_min = HUGE_VAL, etac_min = HUGE_VAL;
+    double sj_min = HUGE_VAL, area = 0.0;
+    int n_tau = 0, n_tauc = 0, inverted = 0;
+    for (int q = 0; q < nq; q++) {
+        const int *c = &m->conn[(size_t)q * npe];
+        double ang[4], angc[4];
+        straight_angles(m, q, orient, ang);
+        double e = eta_of(ang);
+        curved_angles(m, D, q, orient, angc);
+        double ec = eta_of(angc);
+        if (eta) eta[q] = e;
+        eta_sum += e;
+        etac_sum += ec;
+        eta_min = fmin(eta_min, e);
+        etac_min = fmin(etac_min, ec);
+        n_tau += e > 0.9;
+        n_tauc += ec > 0.9;
+        /* scaled Jacobian over the nodes */
+        double jmin = HUGE_VAL, jmax = 0.0;
+        for (int j = 0; j <= Q; j++)
+            for (int i = 0; i <= Q; i++) {
+                double d[4];
+                node_deriv(m, D, q, i, j, d);
+                double dj = d[0] * d[3] - d[1] * d[2];
+                jmin = fmin(jmin, dj);
+                jmax = fmax(jmax, fabs(dj));
+            }
+        double s = jmax > 0.0 ? jmin / jmax : -1.0;
+        if (sjac) sjac[q] = s;
+        sj_min = fmin(sj_min, s);
+        inverted += jmin <= 0.0;
+        /* area by Gauss quadrature of det J */
+        for (int pv = 0; pv < ng; pv++)
+            for (int pu = 0; pu < ng; pu++) {
+                double d[4] = {0, 0, 0, 0};
+                for (int j = 0; j <= Q; j++)
+                    for (int i = 0; i <= Q; i++) {
+                        const double *x = &m->xy[2 * (size_t)c[sq_quad_node(Q, i, j)]];
+                        double fu = gdl[pu][i] * gl[pv][j], fv = gl[pu][i] * gdl[pv][j];
+                        d[0] += fu * x[0];
+                        d[1] += fv * x[0];
+                        d[2] += fu * x[1];
+                        d[3] += fv * x[1];
+                    }
+                area += gw[pu] * gw[pv] * (d[0] * d[3] - d[1] * d[2]);
+            }
+        /* topology of the corner vertices */
+        for (int k = 0; k < 4; k++) {
+            int v = c[sq_quad_node(Q, CORNER[k][0] * Q, CORNER[k][1] * Q)];
+            int w = c[sq_quad_node(Q, CORNER[(k + 1) % 4][0] * Q, CORNER[(k + 1) % 4][1] * Q)];
+            valence[v]++;
+            angsum[v] += ang[k];
+            unsigned long long lo = (unsigned)(v < w ? v : w), hi = (unsigned)(v < w ? w : v);
+            keys[4 * (size_t)q + k] = lo << 32 | hi;
+        }
+    }
+    /* edges used once are boundary edges (quadstats.py) */
+    size_t ne = 4 * (size_t)nq;
+    qsort(keys, ne, sizeof *keys, cmp_u64);
+    for (size_t i = 0; i < ne;) {
+        size_t k = i;
+        while (k < ne && keys[k] == keys[i]) k++;
+        if (k - i == 1) {
+            bnd[keys[i] >> 32] = 1;
+            bnd[keys[i] & 0xffffffffULL] = 1;
+        }
+        i = k;
+    }
+    for (int v = 0; v < m->nnodes; v++) {
+        if (!valence[v]) continue;
+        qq->vertices++;
+        if (!bnd[v]) {
+            qq->irregular_interior += valence[v] != 4;
+            continue;
+        }
+        qq->boundary_vertices++;
+        /* expected valence from the mesh's interior angle, round half up */
+        int expect = (int)floor(angsum[v] * (180.0 / M_PI) / 90.0 + 0.5);
+        if (expect < 1) expect = 1;
+        qq->irregular_boundary += valence[v] != expect;
+    }
+    qq->eta_mean = eta_sum / nq;
+    qq->eta_min = eta_min;
+    qq->tau_percent = 100.0 * n_tau / nq;
+    qq->eta_curved_mean = etac_sum / nq;
+    qq->eta_curved_min = etac_min;
+    qq->tau_curved_percent = 100.0 * n_tauc / nq;
+    qq->min_scaled_jacobian = sj_min;
+    qq->area = area;
+    qq->inverted = inverted;
+    free(valence);
+    free(angsum);
+    free(bnd);
+    free(keys);
+    return SQ_OK;
+}

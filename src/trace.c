@@ -1,0 +1,454 @@
+/* semquad — the separatrix set: start, synchronous advance, meeting and
+ * merging (Marcon 2019 §3.3, §3.3.1), continuation for layout repairs.
+ * The integrator and the stops are in trace_ab4.c, Algorithm 1 in
+ * trace_start.c. */
+#include "trace_private.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define HALF_PI 1.57079632679489661923
+
+static double seg_seg(const double *a0, const double *a1, const double *b0, const double *b1)
+{
+    double rx = a1[0] - a0[0], ry = a1[1] - a0[1], sx = b1[0] - b0[0], sy = b1[1] - b0[1];
+    double den = rx * sy - ry * sx;
+    if (den != 0.0) {
+        double qx = b0[0] - a0[0], qy = b0[1] - a0[1];
+        double t = (qx * sy - qy * sx) / den, u = (qx * ry - qy * rx) / den;
+        if (t >= 0.0 && t <= 1.0 && u >= 0.0 && u <= 1.0) return 0.0;
+    }
+    const double *p[4] = {a0, a1, b0, b1};
+    const double *s0[4] = {b0, b0, a0, a0}, *s1[4] = {b1, b1, a1, a1};
+    double best = HUGE_VAL;
+    for (int i = 0; i < 4; i++) {
+        double dx = s1[i][0] - s0[i][0], dy = s1[i][1] - s0[i][1], l2 = dx * dx + dy * dy;
+        double t = l2 > 0.0 ? ((p[i][0] - s0[i][0]) * dx + (p[i][1] - s0[i][1]) * dy) / l2 : 0.0;
+        t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
+        best = fmin(best, hypot(s0[i][0] + t * dx - p[i][0], s0[i][1] + t * dy - p[i][1]));
+    }
+    return best;
+}
+
+/* Marcon 2019 §3.3: the fronts are within the merge distance, the lines run
+ * in opposite directions (|Δα| = π when rounded to π/2) and they close in. */
+static int meet(const sq_tracer *tr, const sq_walker *a, const sq_walker *b)
+{
+    if (a->npts < 2 || b->npts < 2) return 0;
+    const double *a1 = &a->xy[2 * (a->npts - 1)], *b1 = &b->xy[2 * (b->npts - 1)];
+    double thr = tr->opt.merge_distance * fmax(a->ht, b->ht);
+    double dx = b1[0] - a1[0], dy = b1[1] - a1[1];
+    if (hypot(dx, dy) > thr + a->h + b->h) return 0; /* cheap reject */
+    long q = lround((a->alpha - b->alpha) / HALF_PI);
+    if ((((q % 4) + 4) % 4) != 2) return 0;
+    double fa[2] = {cos(a->alpha), sin(a->alpha)}, fb[2] = {cos(b->alpha), sin(b->alpha)};
+    if (dx * (fa[0] - fb[0]) + dy * (fa[1] - fb[1]) <= 0.0) return 0;
+    return seg_seg(&a->xy[2 * (a->npts - 2)], a1, &b->xy[2 * (b->npts - 2)], b1) < thr;
+}
+
+/* Continue w until it reaches the other line's start (target): the
+ * singular point or face vertex of `target` at txy (§3.3: "each of two
+ * meeting streamlines are then advanced to the starting point of the
+ * other").  Returns *ok = 0 if it ends elsewhere. */
+static sq_status advance_to(sq_tracer *tr, sq_walker *w, const sq_sep_end *target,
+                            const double txy[2], double budget, int *ok, sq_error *err)
+{
+    *ok = 0;
+    double len0 = w->length, dmin = HUGE_VAL;
+    while (w->active) {
+        SQ_TRY(sq_walker_step(tr, w, err));
+        const double *x = &w->xy[2 * (w->npts - 1)];
+        double d = hypot(x[0] - txy[0], x[1] - txy[1]);
+        double rc = tr->opt.capture_rel * w->ht;
+        if (!w->active) {
+            if ((w->end.kind == SQ_END_SINGULAR || w->end.kind == SQ_END_CORNER) &&
+                w->end.kind == target->kind && w->end.id == target->id) {
+                *ok = 1;
+            } else if (w->end.kind != SQ_END_OPEN && d < fmax(rc, 0.05 * len0)) {
+                /* ended next to the target (e.g. on the boundary beside the
+                 * corner): the end is moved onto it */
+                w->xy[2 * (w->npts - 1)] = txy[0];
+                w->xy[2 * (w->npts - 1) + 1] = txy[1];
+                *ok = 1;
+            }
+            break;
+        }
+        if (d < rc) {
+            SQ_TRY(sq_walker_push(w, txy, err));
+            *ok = 1;
+            break;
+        }
+        /* passing the target at a distance: the closest approach is
+         * accepted if it is close relative to the line */
+        if (d > dmin && dmin < fmax(2.0 * rc, 0.05 * len0)) {
+            w->npts--;
+            SQ_TRY(sq_walker_push(w, txy, err));
+            *ok = 1;
+            break;
+        }
+        dmin = fmin(dmin, d);
+        if (w->length - len0 > budget) break;
+    }
+    w->active = 0;
+    if (*ok) w->end = *target;
+    return SQ_OK;
+}
+
+/* Point at normalized arc length x of a polyline (cum: cumulative lengths). */
+static void at_length(const double *xy, const double *cum, int n, double x, double p[2])
+{
+    double s = x * cum[n - 1];
+    int lo = 0, hi = n - 1;
+    while (hi - lo > 1) {
+        int mid = (lo + hi) / 2;
+        if (cum[mid] <= s)
+            lo = mid;
+        else
+            hi = mid;
+    }
+    double l = cum[hi] - cum[lo], t = l > 0.0 ? (s - cum[lo]) / l : 0.0;
+    p[0] = xy[2 * lo] + t * (xy[2 * hi] - xy[2 * lo]);
+    p[1] = xy[2 * lo + 1] + t * (xy[2 * hi + 1] - xy[2 * lo + 1]);
+}
+
+/* Blend of a (start of a -> start of b) and b reversed with W0 = cos^2(πx/2)
+ * on a and W1 = sin^2(πx/2) on b (Marcon 2019 §3.3): the weights' slopes
+ * vanish at both ends, so both start directions are kept. */
+static sq_status blend(const double *axy, int na, const double *bxy, int nb, sq_separatrix *out,
+                       sq_error *err)
+{
+    int n = na > nb ? na : nb;
+    double *ca = malloc((size_t)na * sizeof *ca), *cb = malloc((size_t)nb * sizeof *cb);
+    double *rb = malloc(2 * (size_t)nb * sizeof *rb), *xy = malloc(2 * (size_t)n * sizeof *xy);
+    if (!ca || !cb || !rb || !xy) {
+        free(ca), free(cb), free(rb), free(xy);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory (merging %d + %d points)", na, nb);
+    }
+    for (int i = 0; i < nb; i++) {
+        rb[2 * i] = bxy[2 * (nb - 1 - i)];
+        rb[2 * i + 1] = bxy[2 * (nb - 1 - i) + 1];
+    }
+    ca[0] = cb[0] = 0.0;
+    for (int i = 1; i < na; i++)
+        ca[i] = ca[i - 1] + hypot(axy[2 * i] - axy[2 * i - 2], axy[2 * i + 1] - axy[2 * i - 1]);
+    for (int i = 1; i < nb; i++)
+        cb[i] = cb[i - 1] + hypot(rb[2 * i] - rb[2 * i - 2], rb[2 * i + 1] - rb[2 * i - 1]);
+    for (int i = 0; i < n; i++) {
+        double x = (double)i / (n - 1), pa[2], pb[2];
+        at_length(axy, ca, na, x, pa);
+        at_length(rb, cb, nb, x, pb);
+        double c = cos(HALF_PI * x), w0 = c * c, w1 = 1.0 - w0;
+        xy[2 * i] = w0 * pa[0] + w1 * pb[0];
+        xy[2 * i + 1] = w0 * pa[1] + w1 * pb[1];
+    }
+    /* the ends exactly: the two starts */
+    xy[0] = axy[0], xy[1] = axy[1];
+    xy[2 * n - 2] = bxy[0], xy[2 * n - 1] = bxy[1];
+    free(ca), free(cb), free(rb);
+    out->xy = xy;
+    out->npts = n;
+    return SQ_OK;
+}
+
+/* Merge walkers a and b that met: each is advanced to the other's start,
+ * then the two are blended.  If either misses, the fallback joins a's part
+ * to b's part reversed (a kink of at most the merge distance). */
+static sq_status merge(sq_tracer *tr, sq_walker *a, sq_walker *b, sq_separatrix *out,
+                       sq_error *err)
+{
+    int na0 = a->npts, nb0 = b->npts, oka = 0, okb = 0;
+    double budget = 2.0 * (a->length + b->length) + 10.0 * (a->ht + b->ht);
+    a->active = b->active = 1;
+    SQ_TRY(advance_to(tr, a, &b->start, b->start_xy, budget, &oka, err));
+    if (oka) SQ_TRY(advance_to(tr, b, &a->start, a->start_xy, budget, &okb, err));
+    memset(out, 0, sizeof *out);
+    if (oka && okb) {
+        SQ_TRY(blend(a->xy, a->npts, b->xy, b->npts, out, err));
+    } else {
+        int n = na0 + nb0;
+        double *xy = malloc(2 * (size_t)n * sizeof *xy);
+        if (!xy) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory (merging)");
+        memcpy(xy, a->xy, 2 * (size_t)na0 * sizeof *xy);
+        for (int i = 0; i < nb0; i++) {
+            xy[2 * (na0 + i)] = b->xy[2 * (nb0 - 1 - i)];
+            xy[2 * (na0 + i) + 1] = b->xy[2 * (nb0 - 1 - i) + 1];
+        }
+        out->xy = xy;
+        out->npts = n;
+    }
+    out->start = a->start;
+    out->end = b->start;
+    out->start_angle = a->start_angle;
+    out->end_angle = b->start_angle + M_PI;
+    out->merged = 1;
+    return SQ_OK;
+}
+
+static sq_status to_separatrix(sq_walker *w, sq_separatrix *s, sq_error *err)
+{
+    memset(s, 0, sizeof *s);
+    double *xy = realloc(w->xy, 2 * (size_t)w->npts * sizeof *xy);
+    if (!xy) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    s->xy = xy;
+    s->npts = w->npts;
+    s->start = w->start;
+    s->end = w->end;
+    s->start_angle = w->start_angle;
+    s->end_angle = w->end_angle;
+    w->xy = NULL;
+    w->npts = w->cap = 0;
+    return SQ_OK;
+}
+
+typedef struct {
+    sq_walker *w;
+    int *partner; /* merged with, or -1 */
+    sq_separatrix *merged;
+    int n;
+} walk_set;
+
+static void walk_set_free(walk_set *ws)
+{
+    for (int i = 0; i < ws->n; i++) {
+        sq_walker_free(&ws->w[i]);
+        free(ws->merged[i].xy);
+    }
+    free(ws->w);
+    free(ws->partner);
+    free(ws->merged);
+}
+
+static sq_status run(sq_tracer *tr, const int *vertex_quads, walk_set *ws, sq_error *err)
+{
+    const sq_face_info *info = tr->info;
+    int cap = 0;
+    for (int j = 0; j < tr->nsing; j++) {
+        if (tr->sing[j].valence < 1 || tr->sing[j].valence > 64)
+            return SQ_FAIL(err, SQ_ERR_PATTERN, "singular point %d has valence %d", j,
+                           tr->sing[j].valence);
+        cap += tr->sing[j].valence;
+    }
+    for (int k = 0; k < info->nvertices; k++)
+        if (vertex_quads && !info->vertices[k].smooth && vertex_quads[k] >= 2)
+            cap += vertex_quads[k] - 1;
+    ws->w = calloc(cap ? cap : 1, sizeof *ws->w);
+    ws->partner = malloc((cap ? cap : 1) * sizeof *ws->partner);
+    ws->merged = calloc(cap ? cap : 1, sizeof *ws->merged);
+    if (!ws->w || !ws->partner || !ws->merged)
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory (%d separatrices)", cap);
+    double alpha[64], h0;
+    for (int j = 0; j < tr->nsing; j++) {
+        SQ_TRY(sq_trace_singular_starts(tr, j, alpha, &h0, err));
+        double p0[2] = {tr->sing[j].x, tr->sing[j].y};
+        for (int k = 0; k < tr->sing[j].valence; k++) {
+            sq_walker *w = &ws->w[ws->n];
+            ws->partner[ws->n++] = -1;
+            SQ_TRY(sq_walker_init(tr, w, p0, alpha[k], h0, err));
+            w->start_sing = j;
+            w->start.kind = SQ_END_SINGULAR;
+            w->start.id = j;
+        }
+    }
+    /* smooth junctions take 2 quads but are no layout nodes: nothing
+     * starts there */
+    for (int k = 0; k < info->nvertices; k++) {
+        if (!vertex_quads || info->vertices[k].smooth || vertex_quads[k] < 2) continue;
+        int n = vertex_quads[k];
+        if (n > 64) return SQ_FAIL(err, SQ_ERR_PATTERN, "vertex %d takes %d quads", k, n);
+        SQ_TRY(sq_trace_corner_starts(tr, k, n, alpha, &h0, err));
+        double p0[2] = {info->vertices[k].x, info->vertices[k].y};
+        for (int q = 0; q < n - 1; q++) {
+            sq_walker *w = &ws->w[ws->n];
+            ws->partner[ws->n++] = -1;
+            SQ_TRY(sq_walker_init(tr, w, p0, alpha[q], h0, err));
+            w->start_vertex = k;
+            w->start.kind = SQ_END_CORNER;
+            w->start.id = k;
+        }
+    }
+    /* synchronous advance (§3.3), fronts compared after every round */
+    int nactive = ws->n;
+    while (nactive > 0) {
+        for (int i = 0; i < ws->n; i++)
+            if (ws->w[i].active) SQ_TRY(sq_walker_step(tr, &ws->w[i], err));
+        for (int i = 0; i < ws->n; i++) {
+            if (!ws->w[i].active) continue;
+            for (int q = i + 1; q < ws->n; q++) {
+                if (!ws->w[q].active || !meet(tr, &ws->w[i], &ws->w[q])) continue;
+                ws->partner[i] = q;
+                ws->partner[q] = i;
+                SQ_TRY(merge(tr, &ws->w[i], &ws->w[q], &ws->merged[i], err));
+                break;
+            }
+        }
+        nactive = 0;
+        for (int i = 0; i < ws->n; i++) nactive += ws->w[i].active;
+    }
+    return SQ_OK;
+}
+
+/* Two lines that both ran to the other's start (the meeting was missed,
+ * e.g. one started much later along the other) are one separatrix. */
+static int same_link(const sq_walker *a, const sq_walker *b)
+{
+    if (a->end.kind != b->start.kind || a->end.id != b->start.id) return 0;
+    if (b->end.kind != a->start.kind || b->end.id != a->start.id) return 0;
+    double d = fmod(fabs(a->end_angle - (b->start_angle + M_PI)), 2.0 * M_PI);
+    return fmin(d, 2.0 * M_PI - d) < 0.25 * M_PI;
+}
+
+sq_status sq_trace_separatrices_stats(const sq_cross_field *field, const cad_face *face,
+                                      const sq_face_info *info, const int *vertex_quads,
+                                      int nsing, const sq_singularity *sing,
+                                      const sq_trace_options *opt, sq_separatrix_set *out,
+                                      sq_trace_stats *stats, sq_error *err)
+{
+    sq_tracer tr;
+    if (!out) return SQ_FAIL(err, SQ_ERR_USAGE, "no output set");
+    memset(out, 0, sizeof *out);
+    SQ_TRY(sq_tracer_init(&tr, field, face, info, nsing, sing, opt, err));
+    walk_set ws = {0};
+    sq_status st = run(&tr, vertex_quads, &ws, err);
+    int merges = 0;
+    for (int i = 0; st == SQ_OK && i < ws.n; i++) {
+        if (ws.partner[i] >= 0) continue;
+        for (int q = i + 1; q < ws.n; q++) {
+            if (ws.partner[q] >= 0 || !same_link(&ws.w[i], &ws.w[q])) continue;
+            ws.partner[i] = q;
+            ws.partner[q] = i;
+            st = blend(ws.w[i].xy, ws.w[i].npts, ws.w[q].xy, ws.w[q].npts, &ws.merged[i], err);
+            if (st != SQ_OK) break;
+            sq_separatrix *m = &ws.merged[i];
+            m->start = ws.w[i].start;
+            m->end = ws.w[q].start;
+            m->start_angle = ws.w[i].start_angle;
+            m->end_angle = ws.w[q].start_angle + M_PI;
+            m->merged = 1;
+            break;
+        }
+    }
+    for (int i = 0; st == SQ_OK && i < ws.n; i++) {
+        sq_separatrix s;
+        if (ws.partner[i] < 0) {
+            st = to_separatrix(&ws.w[i], &s, err);
+        } else if (ws.partner[i] > i) {
+            s = ws.merged[i];
+            memset(&ws.merged[i], 0, sizeof s);
+            merges++;
+        } else {
+            continue;
+        }
+        if (st == SQ_OK) st = sq_separatrix_set_append(out, &s, err);
+        if (st != SQ_OK) free(s.xy);
+    }
+    if (stats) {
+        stats->traced = ws.n;
+        stats->merges = merges;
+        stats->steps = tr.steps;
+    }
+    walk_set_free(&ws);
+    if (st != SQ_OK) sq_separatrix_set_free(out);
+    return st;
+}
+
+sq_status sq_trace_separatrices(const sq_cross_field *field, const cad_face *face,
+                                const sq_face_info *info, const int *vertex_quads, int nsing,
+                                const sq_singularity *sing, const sq_trace_options *opt,
+                                sq_separatrix_set *out, sq_error *err)
+{
+    return sq_trace_separatrices_stats(field, face, info, vertex_quads, nsing, sing, opt, out,
+                                       NULL, err);
+}
+
+sq_status sq_trace_streamline(const sq_cross_field *field, const cad_face *face,
+                              const sq_face_info *info, int nsing, const sq_singularity *sing,
+                              const sq_trace_options *opt, const double p0[2], double alpha0,
+                              sq_separatrix *out, long *steps, sq_error *err)
+{
+    sq_tracer tr;
+    sq_walker w;
+    SQ_TRY(sq_tracer_init(&tr, field, face, info, nsing, sing, opt, err));
+    int elem = -1;
+    double th;
+    if (field->direction(field->ctx, p0, &elem, &th)) elem = -1;
+    /* the order ramp (1 -> 4) starts with steps 1e-3 of the target so the
+     * low-order steps' errors (Euler: h^2 κ / 2) stay below 1e-10; the step
+     * then grows 1.25 times per step */
+    SQ_TRY(sq_walker_init(&tr, &w, p0, alpha0, 1e-3 * sq_tracer_step_at(&tr, elem), err));
+    for (int j = 0; j < nsing; j++)
+        if (hypot(p0[0] - sing[j].x, p0[1] - sing[j].y) < 1e-12 * tr.scale) w.start_sing = j;
+    sq_status st = SQ_OK;
+    while (st == SQ_OK && w.active) st = sq_walker_step(&tr, &w, err);
+    if (st == SQ_OK) st = to_separatrix(&w, out, err);
+    if (steps) *steps = tr.steps;
+    sq_walker_free(&w);
+    return st;
+}
+
+sq_status sq_trace_continue(const sq_cross_field *field, const cad_face *face,
+                            const sq_face_info *info, int nsing, const sq_singularity *sing,
+                            const sq_trace_options *opt, sq_separatrix_set *set, int k,
+                            sq_error *err)
+{
+    sq_tracer tr;
+    if (!set || k < 0 || k >= set->n || set->s[k].npts < 1)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "no separatrix %d to continue", k);
+    SQ_TRY(sq_tracer_init(&tr, field, face, info, nsing, sing, opt, err));
+    tr.obst = set;
+    tr.obst_skip = k;
+    sq_separatrix *s = &set->s[k];
+    int n = s->npts;
+    const double *last = &s->xy[2 * (n - 1)];
+    /* direction of travel at the end: the last segment, or the start angle */
+    double dir = n >= 2 ? atan2(last[1] - s->xy[2 * n - 3], last[0] - s->xy[2 * n - 4])
+                        : s->start_angle;
+    /* rebuild the AB history from the last (up to) four points, each with
+     * the branch nearest to the polyline's direction there */
+    sq_walker w;
+    double th;
+    int elem = -1;
+    if (field->direction(field->ctx, last, &elem, &th)) elem = -1;
+    double h = sq_tracer_step_at(&tr, elem);
+    SQ_TRY(sq_walker_init(&tr, &w, last, dir, h, err));
+    if (elem >= 0) {
+        w.alpha = th + HALF_PI * nearbyint((dir - th) / HALF_PI);
+        w.f[0][0] = cos(w.alpha);
+        w.f[0][1] = sin(w.alpha);
+        w.elem = elem;
+    }
+    double tau = 0.0;
+    for (int i = n - 2; i >= 0 && i >= n - 4 && w.nh < 4; i--) {
+        const double *p = &s->xy[2 * i], *q = &s->xy[2 * i + 2];
+        double d = atan2(q[1] - p[1], q[0] - p[0]), a = d;
+        int e2 = elem;
+        if (field->direction(field->ctx, p, &e2, &th)) break;
+        a = th + HALF_PI * nearbyint((d - th) / HALF_PI);
+        tau -= hypot(q[0] - p[0], q[1] - p[1]);
+        w.f[w.nh][0] = cos(a);
+        w.f[w.nh][1] = sin(a);
+        w.tau[w.nh] = tau;
+        w.nh++;
+    }
+    if (w.nh > 1) w.h = w.tau[0] - w.tau[1];
+    for (int j = 0; j < nsing; j++)
+        if (s->start.kind == SQ_END_SINGULAR && s->start.id == j) w.start_sing = j;
+    if (s->start.kind == SQ_END_CORNER) w.start_vertex = s->start.id;
+    w.length = sq_separatrix_length(s);
+    sq_status st = SQ_OK;
+    while (st == SQ_OK && w.active) st = sq_walker_step(&tr, &w, err);
+    if (st == SQ_OK && w.npts > 1) {
+        double *xy = realloc(s->xy, 2 * (size_t)(n + w.npts - 1) * sizeof *xy);
+        if (!xy) {
+            st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        } else {
+            memcpy(xy + 2 * n, w.xy + 2, 2 * (size_t)(w.npts - 1) * sizeof *xy);
+            s->xy = xy;
+            s->npts = n + w.npts - 1;
+            s->end = w.end;
+            s->end_angle = w.end_angle;
+        }
+    }
+    sq_walker_free(&w);
+    return st;
+}

@@ -1,0 +1,235 @@
+#include "write_layout.h"
+
+#include "outfile.h"
+#include "svg.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+static void key_int(sq_json *j, const char *k, long v)
+{
+    sq_json_key(j, k);
+    sq_json_int(j, v);
+}
+
+static void key_num(sq_json *j, const char *k, double v)
+{
+    sq_json_key(j, k);
+    sq_json_number(j, v);
+}
+
+static const char *role_origin(const sq_layout *L, int k)
+{
+    switch (L->role[k]) {
+    case SQ_LROLE_MIDPOINT: return "midpoint";
+    case SQ_LROLE_CROSSING: return "crossing";
+    case SQ_LROLE_TJUNCTION: return "t-junction";
+    default: return sq_origin_name(L->sing[k].origin);
+    }
+}
+
+void sq_json_layout_keys(sq_json *j, const sq_layout_result *r)
+{
+    const sq_layout *L = &r->layout;
+    sq_json_key(j, "singularities");
+    sq_json_begin_array(j);
+    for (int k = 0; k < L->nsing; k++) {
+        if (L->role[k] == SQ_LROLE_CROSSING) continue; /* regular valence-4 nodes */
+        sq_json_begin_object(j);
+        key_num(j, "x", L->sing[k].x);
+        key_num(j, "y", L->sing[k].y);
+        key_int(j, "valence", L->sing[k].valence);
+        sq_json_key(j, "origin");
+        sq_json_string(j, role_origin(L, k));
+        sq_json_end_object(j);
+    }
+    sq_json_end_array(j);
+    sq_json_key(j, "corners");
+    sq_json_begin_array(j);
+    const sq_face_info *info = &r->analysis.info;
+    for (int k = 0; k < info->nvertices; k++) {
+        if (info->vertices[k].smooth) continue;
+        sq_json_begin_object(j);
+        key_num(j, "x", info->vertices[k].x);
+        key_num(j, "y", info->vertices[k].y);
+        key_num(j, "angle_deg", info->vertices[k].angle_deg);
+        key_int(j, "valence", r->analysis.corners[k].valence);
+        sq_json_end_object(j);
+    }
+    sq_json_end_array(j);
+    const sq_layout_stats *s = &L->stats;
+    sq_json_key(j, "layout");
+    sq_json_begin_object(j);
+    sq_json_key(j, "valid");
+    sq_json_bool(j, r->valid);
+    key_int(j, "separatrices_traced", r->trace_stats.traced);
+    key_int(j, "merges", r->trace_stats.merges);
+    key_int(j, "separatrices", s->separatrices);
+    key_int(j, "patches", s->patches);
+    key_int(j, "quad_patches", s->quad_patches);
+    key_int(j, "t_junctions", s->t_junctions);
+    key_int(j, "limit_cycles_cut", s->limit_cycles_cut);
+    key_int(j, "triangles_repaired", s->triangles_repaired);
+    key_int(j, "annuli_cut", s->annuli_cut);
+    key_int(j, "duplicates_removed", s->duplicates_removed);
+    key_int(j, "crossings_split", s->crossings_split);
+    key_int(j, "iterations", s->iterations);
+    sq_json_end_object(j);
+}
+
+sq_status sq_write_layout_report(const char *path, const char *input, int face,
+                                 const sq_layout_result *r, double t_read, double t_split,
+                                 sq_error *err)
+{
+    sq_outfile f;
+    SQ_TRY(sq_outfile_open(path, &f, err));
+    const sq_field_analysis *a = &r->analysis;
+    sq_json j;
+    sq_json_init(&j, f.fp);
+    sq_json_begin_object(&j);
+    sq_json_key(&j, "input");
+    sq_json_string(&j, input);
+    key_int(&j, "face", face);
+    key_int(&j, "chi", a->info.chi);
+    sq_json_key(&j, "field");
+    sq_json_begin_object(&j);
+    sq_json_key(&j, "kind");
+    sq_json_string(&j, "guiding");
+    sq_json_key(&j, "method");
+    sq_json_string(&j, a->field.method == SEM_CG ? "cg" : "dg");
+    key_int(&j, "order", a->field.order);
+    key_int(&j, "triangles", a->tri.mesh->ntris);
+    key_int(&j, "dofs", a->field.ndofs);
+    sq_json_end_object(&j);
+    sq_json_layout_keys(&j, r);
+    sq_json_key(&j, "timings_s");
+    sq_json_begin_object(&j);
+    key_num(&j, "read", t_read);
+    key_num(&j, "triangulate", a->t_triangulate);
+    key_num(&j, "solve", a->t_solve);
+    key_num(&j, "critical_points", a->t_critical);
+    key_num(&j, "trace", r->t_trace);
+    key_num(&j, "layout", r->t_layout);
+    if (t_split >= 0.0) key_num(&j, "split", t_split);
+    sq_json_end_object(&j);
+    sq_json_end_object(&j);
+    return sq_outfile_commit(&f, err);
+}
+
+/* A pleasant, distinct fill per patch (golden-angle hues). */
+static void patch_colour(int p, char *buf, size_t n)
+{
+    double h = fmod(p * 137.508, 360.0);
+    snprintf(buf, n, "hsl(%.0f,60%%,82%%)", h);
+}
+
+static const char *valence_colour(int v)
+{
+    switch (v) {
+    case 3: return "#1f5fd6";
+    case 5: return "#d62020";
+    case 6: return "#f08c00";
+    case 8: return "#e6c700";
+    default: return "#555555";
+    }
+}
+
+/* The polygon of a patch's outer cycle: its edges' polylines in walking
+ * order.  Returns the point count (caller frees *xy). */
+static int patch_polygon(const sq_layout *L, const sq_layout_patch *p, double **xy)
+{
+    int end = p->ncycles > 0 ? p->cycle_start[1] : p->nhalf, n = 0;
+    for (int h = 0; h < end; h++) n += L->edges[p->half[h].edge].npts;
+    *xy = malloc(sizeof(double) * 2 * (size_t)(n + 1));
+    if (!*xy) return 0;
+    int k = 0;
+    for (int h = 0; h < end; h++) {
+        const sq_layout_edge *e = &L->edges[p->half[h].edge];
+        for (int i = 0; i < e->npts; i++) {
+            int q = p->half[h].reversed ? e->npts - 1 - i : i;
+            (*xy)[2 * k] = e->xy[2 * q];
+            (*xy)[2 * k + 1] = e->xy[2 * q + 1];
+            k++;
+        }
+    }
+    return k;
+}
+
+sq_status sq_write_layout_svg(const char *path, const sq_layout_result *r, sq_error *err)
+{
+    const sq_layout *L = &r->layout;
+    sq_outfile f;
+    SQ_TRY(sq_outfile_open(path, &f, err));
+    sq_svg svg;
+    sq_svg_begin(&svg, f.fp, r->analysis.info.bbox, 900.0, 700.0);
+    for (int p = 0; p < L->npatches; p++) {
+        double *xy = NULL;
+        int n = patch_polygon(L, &L->patches[p], &xy);
+        char fill[40];
+        if (L->patches[p].ncorners == 4 && L->patches[p].ncycles == 1) patch_colour(p, fill, sizeof fill);
+        else snprintf(fill, sizeof fill, "#ff9f9f"); /* not a quad: shown in alarm red */
+        if (n > 2) sq_svg_polyline(&svg, n, xy, 1, "none", 0.0, fill);
+        free(xy);
+    }
+    for (int e = 0; e < L->nedges; e++) {
+        const sq_layout_edge *ed = &L->edges[e];
+        int bnd = ed->cad_edge >= 0;
+        sq_svg_polyline(&svg, ed->npts, ed->xy, 0, bnd ? "#1a1a1a" : "#2b2b8f", bnd ? 2.2 : 1.4,
+                        "none");
+    }
+    for (int k = 0; k < L->nsing; k++) {
+        const sq_singularity *s = &L->sing[k];
+        if (L->role[k] == SQ_LROLE_CROSSING) {
+            sq_svg_circle(&svg, s->x, s->y, 3.0, "#2b2b8f");
+            continue;
+        }
+        sq_svg_circle(&svg, s->x, s->y, 6.5, valence_colour(s->valence));
+        if (L->role[k] == SQ_LROLE_MIDPOINT) /* a repair: labelled */
+            sq_svg_text(&svg, s->x, s->y, 8.0, 14.0, 12.0, "#b00000", "midpoint");
+        else if (L->role[k] == SQ_LROLE_TJUNCTION)
+            sq_svg_text(&svg, s->x, s->y, 8.0, 14.0, 12.0, "#b00000", "T");
+    }
+    const sq_layout_stats *st = &L->stats;
+    char caption[256];
+    snprintf(caption, sizeof caption,
+             "%s layout: %d separatrices, %d/%d quad patches; repairs: %d limit cycles, %d "
+             "T-junctions, %d triangles, %d annuli, %d duplicates, %d crossings",
+             r->valid ? "valid" : "INVALID", st->separatrices, st->quad_patches, st->patches,
+             st->limit_cycles_cut, st->t_junctions, st->triangles_repaired, st->annuli_cut,
+             st->duplicates_removed, st->crossings_split);
+    sq_svg_text(&svg, r->analysis.info.bbox[0], r->analysis.info.bbox[1], 0.0, 16.0, 11.0,
+                "#333333", caption);
+    sq_svg_end(&svg);
+    return sq_outfile_commit(&f, err);
+}
+
+sq_status sq_write_layout_step(const char *path, const cad_model *model, int face_index,
+                               const cad_face *face, const sq_layout *L, int *nfaces,
+                               sq_error *err)
+{
+    int nc = 0;
+    for (int e = 0; e < L->nedges; e++) nc += L->edges[e].cad_edge < 0;
+    int *npts = malloc(sizeof(int) * (size_t)(nc + 1));
+    const double **xy = malloc(sizeof(double *) * (size_t)(nc + 1));
+    if (!npts || !xy) {
+        free(npts);
+        free(xy);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    int k = 0;
+    for (int e = 0; e < L->nedges; e++)
+        if (L->edges[e].cad_edge < 0) {
+            npts[k] = L->edges[e].npts;
+            xy[k++] = L->edges[e].xy;
+        }
+    cad_split *split = NULL;
+    sq_status st = cad_face_split(model, face_index, face, nc, npts, xy, &split, err);
+    if (st == SQ_OK) {
+        if (nfaces) *nfaces = cad_split_num_faces(split);
+        st = cad_split_write_step(split, path, err);
+    }
+    cad_split_free(&split);
+    free(npts);
+    free(xy);
+    return st;
+}

@@ -1,0 +1,135 @@
+#include "write_msh.h"
+
+#include "outfile.h"
+#include "quad_order.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+sq_status sq_quad_mesh_check(const sq_quad_mesh *m, sq_error *err)
+{
+    if (!m || m->order < 1 || m->order > 10)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "quad mesh missing or order outside 1..10");
+    size_t n = (size_t)(m->order + 1) * (m->order + 1) * (size_t)m->nquads;
+    for (size_t k = 0; k < n; k++)
+        if (m->conn[k] < 0 || m->conn[k] >= m->nnodes)
+            return SQ_FAIL(err, SQ_ERR_USAGE, "quad %zu refers to node %d of %d", k / ((size_t)(m->order + 1) * (m->order + 1)),
+                           m->conn[k], m->nnodes);
+    for (int b = 0; b < m->nbnd; b++)
+        if (m->bnd_quad[b] < 0 || m->bnd_quad[b] >= m->nquads || m->bnd_side[b] < 0 ||
+            m->bnd_side[b] > 3 || m->bnd_tag[b] < 0 || m->bnd_tag[b] >= m->ntags)
+            return SQ_FAIL(err, SQ_ERR_USAGE,
+                           "boundary side %d (quad %d, side %d, tag %d) out of range (%d quads, "
+                           "%d tags)",
+                           b, m->bnd_quad[b], m->bnd_side[b], m->bnd_tag[b], m->nquads, m->ntags);
+    return SQ_OK;
+}
+
+/* Lattice (i, j) of the s-th node along local side k, from corner k to
+ * corner k+1 (counter-clockwise, the domain on the left). */
+static int side_node(int Q, int k, int s)
+{
+    switch (k) {
+    case 0: return sq_quad_node(Q, s, 0);
+    case 1: return sq_quad_node(Q, Q, s);
+    case 2: return sq_quad_node(Q, Q - s, Q);
+    default: return sq_quad_node(Q, 0, Q - s);
+    }
+}
+
+sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, sq_error *err)
+{
+    SQ_TRY(sq_quad_mesh_check(m0, err));
+    sq_quad_mesh *eq = NULL;
+    const sq_quad_mesh *m = m0;
+    if (m0->nodes != SQ_NODES_EQUISPACED) {
+        SQ_TRY(sq_quad_mesh_resample(m0, SQ_NODES_EQUISPACED, &eq, err));
+        m = eq;
+    }
+    int Q = m->order, npe = (Q + 1) * (Q + 1), nt = m->ntags;
+    int *ij = malloc(sizeof(int) * 2 * (size_t)npe), lo[11];
+    int *count = calloc((size_t)nt + 1, sizeof *count);
+    double *bb = malloc(sizeof(double) * 4 * ((size_t)nt + 1));
+    sq_outfile f = {0};
+    sq_status st = ij && count && bb ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) st = sq_outfile_open(path, &f, err);
+    if (st != SQ_OK) goto done;
+    sq_quad_gmsh_order(Q, ij);
+    sq_line_order(Q, lo);
+    /* bounding boxes of the curves (from their sides' nodes) and the surface */
+    for (int t = 0; t <= nt; t++) bb[4 * t] = bb[4 * t + 1] = HUGE_VAL, bb[4 * t + 2] = bb[4 * t + 3] = -HUGE_VAL;
+    for (int v = 0; v < m->nnodes; v++) {
+        double *b = &bb[4 * nt];
+        b[0] = fmin(b[0], m->xy[2 * v]), b[1] = fmin(b[1], m->xy[2 * v + 1]);
+        b[2] = fmax(b[2], m->xy[2 * v]), b[3] = fmax(b[3], m->xy[2 * v + 1]);
+    }
+    for (int s = 0; s < m->nbnd; s++) {
+        int t = m->bnd_tag[s];
+        const int *c = &m->conn[(size_t)m->bnd_quad[s] * npe];
+        count[t]++;
+        for (int k = 0; k <= Q; k++) {
+            const double *x = &m->xy[2 * (size_t)c[side_node(Q, m->bnd_side[s], k)]];
+            double *b = &bb[4 * t];
+            b[0] = fmin(b[0], x[0]), b[1] = fmin(b[1], x[1]);
+            b[2] = fmax(b[2], x[0]), b[3] = fmax(b[3], x[1]);
+        }
+    }
+    for (int t = 0; t <= nt; t++)
+        if (bb[4 * t] > bb[4 * t + 2]) bb[4 * t] = bb[4 * t + 1] = bb[4 * t + 2] = bb[4 * t + 3] = 0.0;
+    FILE *fp = f.fp;
+    fputs("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n", fp);
+    /* physical names: dim tag "name" */
+    fprintf(fp, "$PhysicalNames\n%d\n", nt + 1);
+    for (int t = 0; t < nt; t++) fprintf(fp, "1 %d \"boundary_%d\"\n", t + 1, t);
+    fprintf(fp, "2 %d \"domain\"\n$EndPhysicalNames\n", nt + 1);
+    /* entities: no points; curve t+1 with physical t+1 and no bounding
+     * points; surface 1 with physical nt+1 bounded by all curves */
+    fprintf(fp, "$Entities\n0 %d 1 0\n", nt);
+    for (int t = 0; t < nt; t++)
+        fprintf(fp, "%d %.17g %.17g 0 %.17g %.17g 0 1 %d 0\n", t + 1, bb[4 * t], bb[4 * t + 1],
+                bb[4 * t + 2], bb[4 * t + 3], t + 1);
+    fprintf(fp, "1 %.17g %.17g 0 %.17g %.17g 0 1 %d %d", bb[4 * nt], bb[4 * nt + 1],
+            bb[4 * nt + 2], bb[4 * nt + 3], nt + 1, nt);
+    for (int t = 0; t < nt; t++) fprintf(fp, " %d", t + 1);
+    fputs("\n$EndEntities\n", fp);
+    /* nodes: one block on the surface, tags 1..nnodes, not parametric */
+    fprintf(fp, "$Nodes\n1 %d %d %d\n2 1 0 %d\n", m->nnodes, m->nnodes ? 1 : 0, m->nnodes,
+            m->nnodes);
+    for (int v = 0; v < m->nnodes; v++) fprintf(fp, "%d\n", v + 1);
+    for (int v = 0; v < m->nnodes; v++)
+        fprintf(fp, "%.17g %.17g 0\n", m->xy[2 * v], m->xy[2 * v + 1]);
+    fputs("$EndNodes\n", fp);
+    /* elements: the quads (tags 1..nquads), then a block of lines per curve */
+    int nblocks = 1, nel = m->nquads + m->nbnd;
+    for (int t = 0; t < nt; t++) nblocks += count[t] > 0;
+    fprintf(fp, "$Elements\n%d %d %d %d\n", nblocks, nel, nel ? 1 : 0, nel);
+    fprintf(fp, "2 1 %d %d\n", sq_gmsh_quad_type(Q), m->nquads);
+    for (int q = 0; q < m->nquads; q++) {
+        const int *c = &m->conn[(size_t)q * npe];
+        fprintf(fp, "%d", q + 1);
+        for (int k = 0; k < npe; k++)
+            fprintf(fp, " %d", c[sq_quad_node(Q, ij[2 * k], ij[2 * k + 1])] + 1);
+        fputc('\n', fp);
+    }
+    int tag = m->nquads;
+    for (int t = 0; t < nt; t++) {
+        if (!count[t]) continue;
+        fprintf(fp, "1 %d %d %d\n", t + 1, sq_gmsh_line_type(Q), count[t]);
+        for (int s = 0; s < m->nbnd; s++) {
+            if (m->bnd_tag[s] != t) continue;
+            const int *c = &m->conn[(size_t)m->bnd_quad[s] * npe];
+            fprintf(fp, "%d", ++tag);
+            for (int k = 0; k <= Q; k++) fprintf(fp, " %d", c[side_node(Q, m->bnd_side[s], lo[k])] + 1);
+            fputc('\n', fp);
+        }
+    }
+    fputs("$EndElements\n", fp);
+    st = sq_outfile_commit(&f, err);
+done:
+    sq_outfile_abort(&f);
+    sq_quad_mesh_free(&eq);
+    free(ij);
+    free(count);
+    free(bb);
+    return st;
+}

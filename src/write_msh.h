@@ -1,0 +1,25 @@
+/* semquad — Gmsh MSH 4.1 ASCII output of a high-order quad mesh.
+ *
+ * Quads of order Q as Gmsh element types 3, 10, 36, 37, 38, 47..51 and the
+ * boundary sides as lines of the same order (1, 8, 26, 27, 28, 62..66), in
+ * Gmsh's node order (quad_order.h) at equispaced positions (a GLL mesh is
+ * resampled with its elements' Lagrange interpolants).  One curve entity and
+ * physical group "boundary_<tag>" (physical tag tag+1) per boundary curve,
+ * one surface entity with physical group "domain" (physical tag ntags+1).
+ * Node tag = mesh node index + 1, quad element tag = quad index + 1.
+ * Format: Gmsh reference manual, "MSH file format version 4.1". */
+#ifndef SQ_WRITE_MSH_H
+#define SQ_WRITE_MSH_H
+
+#include "quad_mesh.h"
+#include "sq_status.h"
+
+/* Atomic (outfile.h): SQ_ERR_OUTPUT if the file cannot be written,
+ * SQ_ERR_USAGE for an inconsistent mesh (node index or tag out of range). */
+sq_status sq_write_msh(const char *path, const sq_quad_mesh *m, sq_error *err);
+
+/* Checks shared by the writers: every node index, boundary quad, side and
+ * tag in range. */
+sq_status sq_quad_mesh_check(const sq_quad_mesh *m, sq_error *err);
+
+#endif

@@ -1,0 +1,173 @@
+#include "write_nektar.h"
+
+#include "outfile.h"
+#include "write_msh.h"
+
+#include <stdlib.h>
+
+typedef struct {
+    unsigned long long key; /* lower corner << 32 | higher corner */
+    int next;               /* node next to the lower corner along the side (Q >= 2) */
+    int quad, side;
+} side_rec;
+
+static int cmp_side(const void *a, const void *b)
+{
+    const side_rec *x = a, *y = b;
+    if (x->key != y->key) return x->key < y->key ? -1 : 1;
+    if (x->next != y->next) return x->next < y->next ? -1 : 1;
+    if (x->quad != y->quad) return x->quad < y->quad ? -1 : 1;
+    return (x->side > y->side) - (x->side < y->side);
+}
+
+static int side_node(int Q, int k, int s)
+{
+    switch (k) {
+    case 0: return sq_quad_node(Q, s, 0);
+    case 1: return sq_quad_node(Q, Q, s);
+    case 2: return sq_quad_node(Q, Q - s, Q);
+    default: return sq_quad_node(Q, 0, Q - s);
+    }
+}
+
+/* "a-b" ranges of a sorted id list, comma separated. */
+static void write_ranges(FILE *fp, const int *ids, int n)
+{
+    for (int i = 0; i < n;) {
+        int k = i;
+        while (k + 1 < n && ids[k + 1] == ids[k] + 1) k++;
+        if (i) fputc(',', fp);
+        if (k > i) fprintf(fp, "%d-%d", ids[i], ids[k]);
+        else fprintf(fp, "%d", ids[i]);
+        i = k + 1;
+    }
+}
+
+static int cmp_int(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, sq_error *err)
+{
+    SQ_TRY(sq_quad_mesh_check(m, err));
+    int Q = m->order, npe = (Q + 1) * (Q + 1), nq = m->nquads, ns = 4 * nq;
+    const char *ptype = m->nodes == SQ_NODES_GLL ? "GaussLobattoLegendre" : "PolyEvenlySpaced";
+    int *vid = malloc(sizeof(int) * ((size_t)m->nnodes + 1));
+    side_rec *rec = malloc(sizeof *rec * ((size_t)ns + 1));
+    int *edge_of = malloc(sizeof(int) * ((size_t)ns + 1)); /* per (quad, side) */
+    int *owner = malloc(sizeof(int) * ((size_t)ns + 1));   /* per edge: quad*4+side */
+    int *list = malloc(sizeof(int) * ((size_t)m->nbnd + nq + 1));
+    sq_outfile f = {0};
+    sq_status st = vid && rec && edge_of && owner && list
+                       ? SQ_OK
+                       : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) st = sq_outfile_open(path, &f, err);
+    if (st != SQ_OK) goto done;
+    FILE *fp = f.fp;
+    /* vertices: corner nodes, numbered in node order */
+    for (int v = 0; v < m->nnodes; v++) vid[v] = -1;
+    for (int q = 0; q < nq; q++)
+        for (int k = 0; k < 4; k++) vid[m->conn[(size_t)q * npe + side_node(Q, k, 0)]] = 0;
+    int nv = 0;
+    for (int v = 0; v < m->nnodes; v++)
+        if (vid[v] == 0) vid[v] = nv++;
+    /* edges: element sides matched by their corner pair (and, from Q = 2,
+     * by the node next to the lower corner, so two different sides between
+     * the same corners stay apart) */
+    for (int q = 0; q < nq; q++) {
+        const int *c = &m->conn[(size_t)q * npe];
+        for (int k = 0; k < 4; k++) {
+            int a = c[side_node(Q, k, 0)], b = c[side_node(Q, k, Q)];
+            side_rec *r = &rec[4 * q + k];
+            unsigned long long lo = (unsigned)(a < b ? a : b), hi = (unsigned)(a < b ? b : a);
+            r->key = lo << 32 | hi;
+            r->next = Q >= 2 ? c[side_node(Q, k, a < b ? 1 : Q - 1)] : 0;
+            r->quad = q;
+            r->side = k;
+        }
+    }
+    qsort(rec, (size_t)ns, sizeof *rec, cmp_side);
+    int ne = 0;
+    for (int i = 0; i < ns;) {
+        int k = i;
+        while (k < ns && rec[k].key == rec[i].key && rec[k].next == rec[i].next) k++;
+        if (k - i > 2) {
+            st = SQ_FAIL(err, SQ_ERR_USAGE, "non-manifold mesh: %d quads share one side", k - i);
+            goto done;
+        }
+        owner[ne] = 4 * rec[i].quad + rec[i].side; /* lowest quad: its direction */
+        for (int s = i; s < k; s++) edge_of[4 * rec[s].quad + rec[s].side] = ne;
+        ne++;
+        i = k;
+    }
+    fputs("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<NEKTAR>\n"
+          "  <GEOMETRY DIM=\"2\" SPACE=\"2\">\n    <VERTEX>\n", fp);
+    for (int v = 0; v < m->nnodes; v++)
+        if (vid[v] >= 0)
+            fprintf(fp, "      <V ID=\"%d\">%.17g %.17g 0</V>\n", vid[v], m->xy[2 * v],
+                    m->xy[2 * v + 1]);
+    fputs("    </VERTEX>\n    <EDGE>\n", fp);
+    for (int e = 0; e < ne; e++) {
+        int q = owner[e] / 4, k = owner[e] % 4;
+        const int *c = &m->conn[(size_t)q * npe];
+        fprintf(fp, "      <E ID=\"%d\">%d %d</E>\n", e, vid[c[side_node(Q, k, 0)]],
+                vid[c[side_node(Q, k, Q)]]);
+    }
+    fputs("    </EDGE>\n    <ELEMENT>\n", fp);
+    for (int q = 0; q < nq; q++)
+        fprintf(fp, "      <Q ID=\"%d\">%d %d %d %d</Q>\n", q, edge_of[4 * q], edge_of[4 * q + 1],
+                edge_of[4 * q + 2], edge_of[4 * q + 3]);
+    fputs("    </ELEMENT>\n", fp);
+    if (Q >= 2) {
+        /* Nektar++ needs every edge of a quad with a face curve to carry Q+1
+         * points too, so all edges are written. */
+        fputs("    <CURVED>\n", fp);
+        for (int e = 0; e < ne; e++) {
+            int q = owner[e] / 4, k = owner[e] % 4;
+            const int *c = &m->conn[(size_t)q * npe];
+            fprintf(fp, "      <E ID=\"%d\" EDGEID=\"%d\" NUMPOINTS=\"%d\" TYPE=\"%s\">", e, e,
+                    Q + 1, ptype);
+            for (int s = 0; s <= Q; s++) {
+                const double *x = &m->xy[2 * (size_t)c[side_node(Q, k, s)]];
+                fprintf(fp, "%s%.17g %.17g 0", s ? " " : "", x[0], x[1]);
+            }
+            fputs("</E>\n", fp);
+        }
+        for (int q = 0; q < nq; q++) {
+            const int *c = &m->conn[(size_t)q * npe];
+            fprintf(fp, "      <F ID=\"%d\" FACEID=\"%d\" NUMPOINTS=\"%d\" TYPE=\"%s\">", q, q, npe,
+                    ptype);
+            for (int n = 0; n < npe; n++)
+                fprintf(fp, "%s%.17g %.17g 0", n ? " " : "", m->xy[2 * (size_t)c[n]],
+                        m->xy[2 * (size_t)c[n] + 1]);
+            fputs("</F>\n", fp);
+        }
+        fputs("    </CURVED>\n", fp);
+    }
+    fputs("    <COMPOSITE>\n      <C ID=\"0\"> Q[", fp);
+    for (int q = 0; q < nq; q++) list[q] = q;
+    write_ranges(fp, list, nq);
+    fputs("] </C>\n", fp);
+    for (int t = 0; t < m->ntags; t++) {
+        int n = 0;
+        for (int s = 0; s < m->nbnd; s++)
+            if (m->bnd_tag[s] == t) list[n++] = edge_of[4 * m->bnd_quad[s] + m->bnd_side[s]];
+        if (!n) continue;
+        qsort(list, (size_t)n, sizeof *list, cmp_int);
+        fprintf(fp, "      <C ID=\"%d\"> E[", t + 1);
+        write_ranges(fp, list, n);
+        fputs("] </C>\n", fp);
+    }
+    fputs("    </COMPOSITE>\n    <DOMAIN> C[0] </DOMAIN>\n  </GEOMETRY>\n</NEKTAR>\n", fp);
+    st = sq_outfile_commit(&f, err);
+done:
+    sq_outfile_abort(&f);
+    free(vid);
+    free(rec);
+    free(edge_of);
+    free(owner);
+    free(list);
+    return st;
+}

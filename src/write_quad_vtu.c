@@ -1,0 +1,76 @@
+#include "write_quad_vtu.h"
+
+#include "outfile.h"
+#include "quad_order.h"
+#include "write_msh.h"
+
+#include <stdlib.h>
+
+#define VTK_LAGRANGE_QUADRILATERAL 70
+
+static void cell_array(FILE *fp, const char *name, const double *v, int n)
+{
+    fprintf(fp, "<DataArray type=\"Float64\" Name=\"%s\" format=\"ascii\">\n", name);
+    for (int i = 0; i < n; i++) fprintf(fp, "%.10g\n", v[i]);
+    fputs("</DataArray>\n", fp);
+}
+
+sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m0, sq_error *err)
+{
+    SQ_TRY(sq_quad_mesh_check(m0, err));
+    int Q = m0->order, npe = (Q + 1) * (Q + 1), nq = m0->nquads;
+    sq_quad_mesh *eq = NULL;
+    const sq_quad_mesh *m = m0;
+    if (m0->nodes != SQ_NODES_EQUISPACED) {
+        SQ_TRY(sq_quad_mesh_resample(m0, SQ_NODES_EQUISPACED, &eq, err));
+        m = eq;
+    }
+    int *ij = malloc(sizeof(int) * 2 * (size_t)npe);
+    double *eta = malloc(sizeof(double) * ((size_t)nq + 1));
+    double *etac = malloc(sizeof(double) * ((size_t)nq + 1));
+    double *sj = malloc(sizeof(double) * ((size_t)nq + 1));
+    sq_outfile f = {0};
+    sq_quad_quality qq;
+    sq_status st = ij && eta && etac && sj ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    /* quality of the mesh as given (its own nodes) */
+    if (st == SQ_OK && nq) st = sq_quad_mesh_quality(m0, eta, sj, &qq, err);
+    if (st == SQ_OK && nq) st = sq_quad_mesh_eta_curved(m0, etac, err);
+    if (st == SQ_OK) st = sq_outfile_open(path, &f, err);
+    if (st != SQ_OK) goto done;
+    sq_quad_vtk_order(Q, ij);
+    FILE *fp = f.fp;
+    fprintf(fp, "<?xml version=\"1.0\"?>\n"
+                "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
+                "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n"
+                "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
+            m->nnodes, nq);
+    for (int v = 0; v < m->nnodes; v++) fprintf(fp, "%.17g %.17g 0\n", m->xy[2 * v], m->xy[2 * v + 1]);
+    fputs("</DataArray>\n</Points>\n<Cells>\n"
+          "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n", fp);
+    for (int q = 0; q < nq; q++) {
+        const int *c = &m->conn[(size_t)q * npe];
+        for (int k = 0; k < npe; k++)
+            fprintf(fp, "%d%c", c[sq_quad_node(Q, ij[2 * k], ij[2 * k + 1])],
+                    k + 1 < npe ? ' ' : '\n');
+    }
+    fputs("</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n", fp);
+    for (int q = 0; q < nq; q++) fprintf(fp, "%ld\n", (long)npe * (q + 1));
+    fputs("</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n", fp);
+    for (int q = 0; q < nq; q++) fprintf(fp, "%d\n", VTK_LAGRANGE_QUADRILATERAL);
+    fputs("</DataArray>\n</Cells>\n<CellData Scalars=\"eta\">\n", fp);
+    cell_array(fp, "eta", eta, nq);
+    cell_array(fp, "eta_curved", etac, nq);
+    cell_array(fp, "scaled_jacobian", sj, nq);
+    fputs("<DataArray type=\"Int32\" Name=\"patch\" format=\"ascii\">\n", fp);
+    for (int q = 0; q < nq; q++) fprintf(fp, "%d\n", m->patch[q]);
+    fputs("</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n", fp);
+    st = sq_outfile_commit(&f, err);
+done:
+    sq_outfile_abort(&f);
+    sq_quad_mesh_free(&eq);
+    free(ij);
+    free(eta);
+    free(etac);
+    free(sj);
+    return st;
+}

@@ -1,0 +1,52 @@
+#!/bin/sh
+# semquad field --singularities: exit 5 with the explanation for a pattern
+# breaking Gauss-Bonnet or with a bad line, exit 0 with VTU (H, theta), SVG
+# and a JSON report of kind H-theta otherwise; the holonomy warning names
+# the loop.  usage: t420-cli-htheta.sh SEMQUAD EXAMPLES_DIR
+set -u
+sq=$1
+ex=$2
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+fail() { echo "$1"; fails=$((fails + 1)); }
+
+"$sq" field "$ex/square.step" --singularities "$ex/square_bad.txt" --report "$tmp/o.json" \
+    >/dev/null 2>"$tmp/err"
+[ $? -eq 5 ] || fail "square_bad: exit status not 5"
+grep -q "4.712389 (3 x pi/2) but 2 pi chi = 6.283185" "$tmp/err" || fail "square_bad: $(cat "$tmp/err")"
+grep -q "add one valence-3 point or remove one valence-5 point" "$tmp/err" || fail "square_bad: no fix"
+[ -e "$tmp/o.json" ] && fail "square_bad: left a report"
+
+printf '0.5 0.5 3\n0.5 0.5 x\n' >"$tmp/bad.txt"
+"$sq" field "$ex/square.step" --singularities "$tmp/bad.txt" >/dev/null 2>"$tmp/err"
+[ $? -eq 5 ] || fail "bad line: exit status not 5"
+grep -q "bad.txt:2:" "$tmp/err" || fail "bad line: $(cat "$tmp/err")"
+
+printf '0.5 0.5 3\n2 2 3\n' >"$tmp/out.txt"
+"$sq" field "$ex/square.step" --singularities "$tmp/out.txt" >/dev/null 2>"$tmp/err"
+[ $? -eq 5 ] || fail "outside: exit status not 5"
+grep -q "line 2: point (2, 2) lies outside" "$tmp/err" || fail "outside: $(cat "$tmp/err")"
+
+"$sq" field "$ex/square.step" --singularities "$tmp/missing.txt" >/dev/null 2>&1
+[ $? -eq 3 ] || fail "missing pattern file: exit status not 3"
+
+"$sq" field "$ex/square.step" --singularities "$ex/square_v8.txt" --vtu "$tmp/o.vtu" \
+    --svg "$tmp/o.svg" --report "$tmp/o.json" >/dev/null 2>"$tmp/err"
+[ $? -eq 0 ] || fail "square_v8: exit status not 0: $(cat "$tmp/err")"
+grep -q '"kind": *"H-theta"' "$tmp/o.json" || fail "square_v8: report kind"
+grep -q '"origin": *"imposed"' "$tmp/o.json" || fail "square_v8: origin"
+grep -q '"theta_jumps"' "$tmp/o.json" || fail "square_v8: no theta_jumps"
+grep -q 'Name="H"' "$tmp/o.vtu" || fail "square_v8: VTU without H"
+grep -q 'Name="theta"' "$tmp/o.vtu" || fail "square_v8: VTU without theta"
+grep -q '<svg' "$tmp/o.svg" || fail "square_v8: no SVG"
+
+"$sq" field "$ex/square_hole.step" --singularities "$ex/square_hole_twisted.txt" >/dev/null \
+    2>"$tmp/err"
+[ $? -eq 0 ] || fail "twisted: exit status not 0"
+grep -q "misaligned by -19.1[0-9]* deg with boundary loop 1" "$tmp/err" || fail "twisted: $(cat "$tmp/err")"
+
+"$sq" field "$ex/triangle.step" --singularities natural --report "$tmp/t.json" >/dev/null 2>&1
+[ $? -eq 0 ] || fail "triangle natural: exit status not 0"
+grep -q '"origin": *"critical-point"' "$tmp/t.json" || fail "triangle natural: origin"
+exit $((fails != 0))
