@@ -27,6 +27,7 @@ sq_status sq_cmd_info(int argc, char **argv, sq_error *err);
 sq_status sq_cmd_triangulate(int argc, char **argv, sq_error *err);
 sq_status sq_cmd_field(int argc, char **argv, sq_error *err);
 sq_status sq_cmd_layout(int argc, char **argv, sq_error *err);
+sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err);
 sq_status sq_cmd_converge(int argc, char **argv, sq_error *err);
 
 #endif

@@ -25,10 +25,16 @@ static const char *usage =
     "      sqrt(area)/3), boundary segments turning at most T degrees (default 30),\n"
     "      high-order nodes exactly on the CAD curves.\n"
     "  field FILE [--face N] [--order P] [--method auto|cg|dg] [--size H] [--geom-order G]\n"
+    "        [--singularities FILE|natural] [--allow-misaligned]\n"
     "        [--vtu out.vtu] [--svg out.svg] [--report out.json] [--quiet]\n"
     "      guiding field (u,v) = (cos 4t, sin 4t) of order P (1..16, default 8), its\n"
     "      critical points with valences, corner valences, Poincare-Hopf check. auto\n"
     "      uses CG when every corner is a multiple of 90 deg, DG otherwise.\n"
+    "      --singularities FILE|natural [--allow-misaligned]: instead, the cross field of\n"
+    "      an imposed pattern (FILE: lines 'x y valence' and 'corner x y quads', see\n"
+    "      docs/singularity-patterns.md; natural: the guiding field's points and corner\n"
+    "      valences): Gauss-Bonnet check (exit 5), H, branch cut, theta, jumps of theta,\n"
+    "      holonomy (misaligned holes are warned about); VTU point data H, theta.\n"
     "  converge FILE [--face N] [--solution NAME] [--method cg|dg|both] [--orders A-B]\n"
     "           [--sizes h1,h2,...] [--geom-order G] [--csv out.csv] [--svg out.svg] [--quiet]\n"
     "      convergence study of the CG/DG Poisson solvers: -lap u = 0 with u = the exact\n"
@@ -37,6 +43,12 @@ static const char *usage =
     "      size (default: automatic), geometry order max(P,8) capped at 12 unless G.\n"
     "      Table on stdout; CSV method,P,h,dofs,L2,H1; SVG log-log plot of the errors\n"
     "      against dofs (p-refinement, or h-refinement per P with several sizes).\n"
+    "  mesh FILE [--face N] [--order Q] [--size h] [--field-order P] [--method auto|cg|dg]\n"
+    "       [--merge-distance K] [--nodes gll|equispaced] [-o out.msh|out.xml|out.vtu]\n"
+    "       [--svg F] [--report F] [-q]\n"
+    "      block-structured high-order quad mesh of order Q (1..10, default 4) with\n"
+    "      elements of size about h: Gmsh MSH 4.1, Nektar++ XML or VTU by extension;\n"
+    "      quality summary on stdout, progress on stderr.\n"
     "  layout FILE [--face N] [--order P] [--method auto|cg|dg] [--size H]\n"
     "         [--merge-distance K] [-o patches.step] [--svg F] [--report F] [--quiet]\n"
     "      quad layout: separatrices traced from the singular points and corners\n"
@@ -74,6 +86,8 @@ int main(int argc, char **argv)
         st = sq_cmd_info(argc - 2, argv + 2, &err);
     } else if (!strcmp(cmd, "converge")) {
         st = sq_cmd_converge(argc - 2, argv + 2, &err);
+    } else if (!strcmp(cmd, "mesh")) {
+        st = sq_cmd_mesh(argc - 2, argv + 2, &err);
     } else if (!strcmp(cmd, "layout")) {
         st = sq_cmd_layout(argc - 2, argv + 2, &err);
     } else if (!strcmp(cmd, "field")) {

@@ -282,10 +282,8 @@ sq_status sq_write_htheta_svg(const char *path, const sq_htheta *f, sq_error *er
     }
     char caption[240];
     snprintf(caption, sizeof caption,
-             "H-theta field, CG P=%d: %d singular points; H isolines red (step %.3g), theta "
-             "isolines blue (step pi/16), branch cut black; valence 3 blue, 5 red, 6 orange, 8 "
-             "yellow",
-             f->h.order, f->npoints, hstep);
+             "H-theta, P=%d: H isolines red (step %.3g), theta blue (pi/16), branch cut black",
+             f->h.order, hstep);
     sq_svg_text(&svg, bb[0], bb[1], 0.0, 16.0, 12.0, "#333333", caption);
     sq_svg_end(&svg);
     free(skip);

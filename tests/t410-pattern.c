@@ -93,9 +93,11 @@ int main(void)
                          "4.712389 (3 x pi/2) but 2 pi chi = 6.283185 (4 x pi/2, chi = 1); "
                          "smallest fix: add one valence-3 point or remove one valence-5 point",
                          f, &info);
-    fails += expect_fail("0.5 0.5 3\n0.2 0.2 3\n", "smallest fix: add 2 valence-3 points", f, &info);
-    fails += expect_fail("0.5 0.5 3\n0.2 0.2 3\n0.3 0.3 3\n0.6 0.6 3\n0.8 0.8 3\n",
-                         "add one valence-5 point or remove one valence-3 point", f, &info);
+    fails += expect_fail("0.5 0.5 6\n", "(2 x pi/2) but 2 pi chi = 6.283185 (4 x pi/2, chi = 1); "
+                         "smallest fix: add 2 valence-3 points", f, &info);
+    fails += expect_fail("0.5 0.5 3\n", "(5 x pi/2) but 2 pi chi = 6.283185 (4 x pi/2, chi = 1); "
+                         "smallest fix: add one valence-5 point or remove one valence-3 point",
+                         f, &info);
     sq_face_info_free(&info);
     cad_face_free(&f);
     cad_model_free(&m);

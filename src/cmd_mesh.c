@@ -1,0 +1,146 @@
+/* semquad mesh FILE [--face N] [--order Q] [--size h] [--field-order P]
+ *   [--method auto|cg|dg] [--merge-distance K] [--nodes gll|equispaced]
+ *   [-o out.msh|.xml|.vtu] [--svg F] [--report F] [-q] */
+#include "cli.h"
+#include "quad_mesher.h"
+#include "write_mesh_report.h"
+#include "write_msh.h"
+#include "write_nektar.h"
+#include "write_quad_svg.h"
+#include "write_quad_vtu.h"
+
+#include <stdio.h>
+#include <string.h>
+
+static int ends_with(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), k = strlen(suffix);
+    return n >= k && !strcmp(s + n - k, suffix);
+}
+
+static sq_status write_mesh(const char *path, const sq_quad_mesh *m, sq_error *err)
+{
+    if (ends_with(path, ".msh")) return sq_write_msh(path, m, err);
+    if (ends_with(path, ".xml")) return sq_write_nektar(path, m, err);
+    if (ends_with(path, ".vtu")) return sq_write_quad_vtu(path, m, err);
+    return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)", path);
+}
+
+static void progress(int quiet, const char *fmt, const char *a, double t)
+{
+    if (!quiet) {
+        fprintf(stderr, fmt, a);
+        fprintf(stderr, " (%.3f s)\n", t);
+    }
+}
+
+sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
+{
+    const char *path = NULL, *outp = NULL, *svg = NULL, *report = NULL, *val;
+    int face = -1, quiet = 0;
+    sq_layout_options lo;
+    sq_layout_options_default(&lo);
+    sq_mesher_options mo;
+    sq_mesher_options_default(&mo);
+    for (int i = 0; i < argc; i++) {
+        const char *a = argv[i];
+        if (!strcmp(a, "--face")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            SQ_TRY(sq_cli_int(a, val, 0, 1000000, &face, err));
+        } else if (!strcmp(a, "--order")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            SQ_TRY(sq_cli_int(a, val, 1, 10, &mo.order, err));
+        } else if (!strcmp(a, "--size")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            SQ_TRY(sq_cli_double(a, val, 1e-300, 1e300, &mo.size, err));
+        } else if (!strcmp(a, "--field-order")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            SQ_TRY(sq_cli_int(a, val, 1, 16, &lo.field.order, err));
+        } else if (!strcmp(a, "--method")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            SQ_TRY(sq_cli_method(val, &lo.field.method, err));
+        } else if (!strcmp(a, "--merge-distance")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            SQ_TRY(sq_cli_double(a, val, 0.1, 1000.0, &lo.trace.merge_distance, err));
+        } else if (!strcmp(a, "--nodes")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            if (!strcmp(val, "gll")) mo.nodes = SQ_NODES_GLL;
+            else if (!strcmp(val, "equispaced")) mo.nodes = SQ_NODES_EQUISPACED;
+            else return SQ_FAIL(err, SQ_ERR_USAGE, "--nodes expects gll or equispaced, got '%s'", val);
+        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &outp, err));
+        } else if (!strcmp(a, "--svg")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &svg, err));
+        } else if (!strcmp(a, "--report")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &report, err));
+        } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
+            quiet = 1;
+        } else if (a[0] == '-' && a[1]) {
+            return SQ_FAIL(err, SQ_ERR_USAGE, "mesh: unknown option %s", a);
+        } else if (!path) {
+            path = a;
+        } else {
+            return SQ_FAIL(err, SQ_ERR_USAGE, "mesh: one input file expected");
+        }
+    }
+    if (!path) return SQ_FAIL(err, SQ_ERR_USAGE, "mesh: missing input file");
+    if (outp && !ends_with(outp, ".msh") && !ends_with(outp, ".xml") && !ends_with(outp, ".vtu"))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)", outp);
+    lo.field.tri.order = lo.field.order < 12 ? lo.field.order : 12;
+
+    sq_mesh_timings t = {0};
+    double t0 = sq_now();
+    cad_model *model = NULL;
+    cad_face *f = NULL;
+    const char *note;
+    SQ_TRY(sq_cli_open_face(path, face, &model, &f, &face, &note, err));
+    t.read = sq_now() - t0;
+    if (note && !quiet) fprintf(stderr, "semquad: note: %s\n", note);
+    progress(quiet, "semquad: read %s", path, t.read);
+    sq_layout_result r;
+    sq_status st = sq_layout_run(f, &lo, &r, err);
+    if (st == SQ_OK) {
+        const sq_field_analysis *a = &r.analysis;
+        t.triangulate = a->t_triangulate;
+        t.solve = a->t_solve;
+        t.critical_points = a->t_critical;
+        t.trace = r.t_trace;
+        t.layout = r.t_layout;
+        if (!quiet) {
+            fprintf(stderr, "semquad: guiding field %s P=%d on %d triangles (%.3f s)\n",
+                    a->field.method == SEM_CG ? "CG" : "DG", a->field.order, a->tri.mesh->ntris,
+                    t.triangulate + t.solve);
+            fprintf(stderr, "semquad: %d singular points, %d separatrices, %d quad patches (%.3f s)\n",
+                    r.nsing, r.layout.stats.separatrices, r.layout.stats.quad_patches,
+                    t.critical_points + t.trace + t.layout);
+        }
+    }
+    sq_quad_mesh *m = NULL;
+    sq_quad_quality q;
+    if (st == SQ_OK) {
+        double t1 = sq_now();
+        st = sq_mesh_layout(f, &r.layout, &mo, &m, err);
+        if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, &q, err);
+        t.mesh = sq_now() - t1;
+        if (st == SQ_OK && q.inverted > 0)
+            st = SQ_FAIL(err, SQ_ERR_LAYOUT,
+                         "%d quads have a non-positive Jacobian (min scaled Jacobian %.3g); try a "
+                         "smaller --size", q.inverted, q.min_scaled_jacobian);
+    }
+    if (st == SQ_OK) {
+        char line[256];
+        sq_quad_quality_line(m, &q, line, sizeof line);
+        if (!quiet) fprintf(stderr, "semquad: meshed (%.3f s)\n", t.mesh);
+        double t2 = sq_now();
+        if (outp) st = write_mesh(outp, m, err);
+        if (st == SQ_OK && svg) st = sq_write_quad_svg(svg, m, err);
+        t.write = sq_now() - t2;
+        if (st == SQ_OK && report) st = sq_write_mesh_report(report, path, face, &r, m, &q, &t, err);
+        if (st == SQ_OK && !quiet) printf("%s\n", line);
+    }
+    sq_quad_mesh_free(&m);
+    sq_layout_result_free(&r);
+    cad_face_free(&f);
+    cad_model_free(&model);
+    return st;
+}

@@ -1,0 +1,608 @@
+#include "quad_mesher.h"
+
+#include "gauss.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_SEGMENTS 1000000 /* per edge: quantization that runs away is a bug */
+
+void sq_mesher_options_default(sq_mesher_options *opt)
+{
+    memset(opt, 0, sizeof *opt);
+    opt->order = 4;
+    opt->nodes = SQ_NODES_GLL;
+    opt->bl_ratio = 1.2;
+}
+
+static int is_quad(const sq_layout_patch *p) { return p->ncorners == 4 && p->ncycles == 1; }
+
+/* Segments on side k of patch p. */
+static long side_count(const sq_layout_patch *p, int k, const int *n)
+{
+    long c = 0;
+    for (int h = p->side_start[k]; h < p->side_start[k + 1]; h++) c += n[p->half[h].edge];
+    return c;
+}
+
+/* Design 1: chord quantization. */
+static sq_status quantize(const sq_layout *L, double size, int *n, sq_error *err)
+{
+    for (int e = 0; e < L->nedges; e++) {
+        long v = lround(L->edges[e].length / size);
+        n[e] = v < 1 ? 1 : (int)fmin((double)v, MAX_SEGMENTS);
+    }
+    for (int changed = 1; changed;) {
+        changed = 0;
+        for (int q = 0; q < L->npatches; q++) {
+            const sq_layout_patch *p = &L->patches[q];
+            for (int k = 0; k < 2; k++) {
+                long a = side_count(p, k, n), c = side_count(p, k + 2, n);
+                if (a == c) continue;
+                int s = a < c ? k : k + 2, best = -1;
+                double ratio = -1.0;
+                for (int h = p->side_start[s]; h < p->side_start[s + 1]; h++) {
+                    int e = p->half[h].edge;
+                    double r = L->edges[e].length / n[e];
+                    if (r > ratio) {
+                        ratio = r;
+                        best = e;
+                    }
+                }
+                n[best] += (int)labs(a - c);
+                if (n[best] > MAX_SEGMENTS)
+                    return SQ_FAIL(err, SQ_ERR_LAYOUT,
+                                   "chord quantization does not settle (patch %d): the layout's "
+                                   "chords are inconsistent", q);
+                changed = 1;
+            }
+        }
+    }
+    return SQ_OK;
+}
+
+/* Node fractions along one segment: GLL or equispaced, tau[0..Q]. */
+static sq_status sub_fractions(int Q, sq_node_kind kind, double *tau, sq_error *err)
+{
+    if (kind == SQ_NODES_EQUISPACED || Q == 1) {
+        for (int i = 0; i <= Q; i++) tau[i] = (double)i / Q;
+        return SQ_OK;
+    }
+    double x[11], w[11];
+    SQ_TRY(sem_gauss_lobatto(Q + 1, x, w, err));
+    for (int i = 0; i <= Q; i++) tau[i] = 0.5 * (1.0 + x[i]);
+    tau[0] = 0.0;
+    tau[Q] = 1.0;
+    return SQ_OK;
+}
+
+typedef struct {
+    int *n;        /* segments per edge */
+    long *base;    /* first global id of each edge's interior points */
+    double **pts;  /* per edge: n*Q+1 points from n0 to n1 */
+} edge_nodes;
+
+static void edge_nodes_free(edge_nodes *en, int nedges)
+{
+    for (int e = 0; en->pts && e < nedges; e++) free(en->pts[e]);
+    free(en->pts);
+    free(en->n);
+    free(en->base);
+}
+
+/* Point k of edge e walked in direction `reversed`, and its global id. */
+static void edge_point(const sq_layout *L, const edge_nodes *en, int Q, int e, int reversed, int k,
+                       double xy[2], long *gid)
+{
+    int M = en->n[e] * Q + 1, kk = reversed ? M - 1 - k : k;
+    xy[0] = en->pts[e][2 * kk];
+    xy[1] = en->pts[e][2 * kk + 1];
+    if (kk == 0) *gid = L->edges[e].n0;
+    else if (kk == M - 1) *gid = L->edges[e].n1;
+    else *gid = en->base[e] + kk - 1;
+}
+
+/* The points of side k of patch p in walking order: count N (returned),
+ * xy[2N], gid[N]; tags[N-1]: CAD edge under each segment (-1 inside). */
+static int side_points(const sq_layout *L, const edge_nodes *en, int Q, const sq_layout_patch *p,
+                       int k, double *xy, long *gid, int *tags)
+{
+    int N = 0;
+    for (int h = p->side_start[k]; h < p->side_start[k + 1]; h++) {
+        int e = p->half[h].edge, M = en->n[e] * Q + 1;
+        for (int i = h == p->side_start[k] ? 0 : 1; i < M; i++) {
+            edge_point(L, en, Q, e, p->half[h].reversed, i, &xy[2 * N], &gid[N]);
+            if (N > 0) tags[N - 1] = L->edges[e].cad_edge;
+            N++;
+        }
+    }
+    return N;
+}
+
+/* Cumulative chord-length fractions of a point list read with stride. */
+static void fractions(const double *xy, int N, double *f)
+{
+    f[0] = 0.0;
+    for (int i = 1; i < N; i++)
+        f[i] = f[i - 1] + hypot(xy[2 * i] - xy[2 * i - 2], xy[2 * i + 1] - xy[2 * i - 1]);
+    for (int i = 1; i < N; i++) f[i] /= f[N - 1] > 0.0 ? f[N - 1] : 1.0;
+}
+
+typedef struct {
+    int NU, NV;      /* grid points - 1 along u and v */
+    double *xy;      /* 2*(NU+1)*(NV+1), index j*(NU+1)+i */
+    long *gid;
+    int *tag[4];     /* CAD edge under each boundary segment of side k, in grid order */
+} patch_grid;
+
+static void patch_grid_free(patch_grid *g)
+{
+    free(g->xy);
+    free(g->gid);
+    for (int k = 0; k < 4; k++) free(g->tag[k]);
+    memset(g, 0, sizeof *g);
+}
+
+/* Design 3: discrete transfinite interpolation of the four sides. */
+static sq_status fill_patch(const sq_layout *L, const edge_nodes *en, int Q, int q, long *next_id,
+                            patch_grid *g, sq_error *err)
+{
+    const sq_layout_patch *p = &L->patches[q];
+    int NU = (int)side_count(p, 0, en->n) * Q, NV = (int)side_count(p, 1, en->n) * Q;
+    int maxN = (NU > NV ? NU : NV) + 1;
+    size_t np = (size_t)(NU + 1) * (NV + 1);
+    g->NU = NU;
+    g->NV = NV;
+    g->xy = malloc(sizeof(double) * 2 * np);
+    g->gid = malloc(sizeof(long) * np);
+    double *sxy = malloc(sizeof(double) * 2 * 4 * (size_t)maxN);
+    long *sid = malloc(sizeof(long) * 4 * (size_t)maxN);
+    double *f = malloc(sizeof(double) * 4 * (size_t)maxN);
+    int ok = g->xy && g->gid && sxy && sid && f;
+    for (int k = 0; k < 4 && ok; k++) ok = (g->tag[k] = malloc(sizeof(int) * (size_t)maxN)) != NULL;
+    if (!ok) {
+        free(sxy);
+        free(sid);
+        free(f);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    double *S[4];
+    long *I[4];
+    int *T[4];
+    for (int k = 0; k < 4; k++) {
+        S[k] = sxy + 2 * (size_t)k * maxN;
+        I[k] = sid + (size_t)k * maxN;
+        T[k] = g->tag[k];
+        side_points(L, en, Q, p, k, S[k], I[k], T[k]);
+    }
+#define G(i, j) ((size_t)(j) * (NU + 1) + (i))
+    /* boundary of the grid: bottom left->right, right bottom->top, top and
+     * left walked backwards (the patch's cycle runs counter-clockwise) */
+    for (int i = 0; i <= NU; i++) {
+        memcpy(&g->xy[2 * G(i, 0)], &S[0][2 * i], 2 * sizeof(double));
+        g->gid[G(i, 0)] = I[0][i];
+        memcpy(&g->xy[2 * G(i, NV)], &S[2][2 * (NU - i)], 2 * sizeof(double));
+        g->gid[G(i, NV)] = I[2][NU - i];
+    }
+    for (int j = 0; j <= NV; j++) {
+        memcpy(&g->xy[2 * G(NU, j)], &S[1][2 * j], 2 * sizeof(double));
+        g->gid[G(NU, j)] = I[1][j];
+        memcpy(&g->xy[2 * G(0, j)], &S[3][2 * (NV - j)], 2 * sizeof(double));
+        g->gid[G(0, j)] = I[3][NV - j];
+    }
+    /* blending parameters from the sides' arc-length fractions */
+    double *fb = f, *ft = f + maxN, *fl = f + 2 * maxN, *fr = f + 3 * maxN;
+    double *tmp = malloc(sizeof(double) * 2 * (size_t)maxN);
+    if (!tmp) {
+        free(sxy);
+        free(sid);
+        free(f);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    for (int i = 0; i <= NU; i++) memcpy(&tmp[2 * i], &g->xy[2 * G(i, 0)], 2 * sizeof(double));
+    fractions(tmp, NU + 1, fb);
+    for (int i = 0; i <= NU; i++) memcpy(&tmp[2 * i], &g->xy[2 * G(i, NV)], 2 * sizeof(double));
+    fractions(tmp, NU + 1, ft);
+    for (int j = 0; j <= NV; j++) memcpy(&tmp[2 * j], &g->xy[2 * G(0, j)], 2 * sizeof(double));
+    fractions(tmp, NV + 1, fl);
+    for (int j = 0; j <= NV; j++) memcpy(&tmp[2 * j], &g->xy[2 * G(NU, j)], 2 * sizeof(double));
+    fractions(tmp, NV + 1, fr);
+    free(tmp);
+    const double *P00 = &g->xy[2 * G(0, 0)], *P10 = &g->xy[2 * G(NU, 0)],
+                 *P11 = &g->xy[2 * G(NU, NV)], *P01 = &g->xy[2 * G(0, NV)];
+    for (int j = 1; j < NV; j++)
+        for (int i = 1; i < NU; i++) {
+            /* (xi, eta): where the lines joining matching side fractions meet */
+            double du = ft[i] - fb[i], dv = fr[j] - fl[j];
+            double xi = (fb[i] + du * fl[j]) / (1.0 - du * dv), eta = fl[j] + dv * xi;
+            const double *B = &g->xy[2 * G(i, 0)], *T = &g->xy[2 * G(i, NV)];
+            const double *Lf = &g->xy[2 * G(0, j)], *R = &g->xy[2 * G(NU, j)];
+            for (int c = 0; c < 2; c++)
+                g->xy[2 * G(i, j) + c] =
+                    (1 - eta) * B[c] + eta * T[c] + (1 - xi) * Lf[c] + xi * R[c] -
+                    ((1 - xi) * (1 - eta) * P00[c] + xi * (1 - eta) * P10[c] + xi * eta * P11[c] +
+                     (1 - xi) * eta * P01[c]);
+            g->gid[G(i, j)] = (*next_id)++;
+        }
+#undef G
+    free(sxy);
+    free(sid);
+    free(f);
+    return SQ_OK;
+}
+
+/* Vertex-level mesh: patch grids of corner vertices glued along edges. */
+typedef struct {
+    int nv, nq;
+    double *xy;     /* 2*nv */
+    int *quad;      /* 4*nq corner vertices, counter-clockwise */
+    int *patch;     /* nq */
+    int *side_tag;  /* 4*nq: CAD edge under side k, or -1 */
+} vmesh;
+
+static void vmesh_free(vmesh *v)
+{
+    free(v->xy);
+    free(v->quad);
+    free(v->patch);
+    free(v->side_tag);
+    memset(v, 0, sizeof *v);
+}
+
+static double quad_area2(const double *a, const double *b, const double *c)
+{
+    return (b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]);
+}
+
+/* Every corner triangle of quad q has positive area. */
+static int quad_valid(const vmesh *v, int q)
+{
+    const int *c = &v->quad[4 * q];
+    for (int k = 0; k < 4; k++)
+        if (!(quad_area2(&v->xy[2 * c[k]], &v->xy[2 * c[(k + 1) % 4]], &v->xy[2 * c[(k + 3) % 4]]) >
+              0.0))
+            return 0;
+    return 1;
+}
+
+/* Laplacian smoothing of the free vertices (inside the face, valence 4),
+ * a move kept only if every quad around the vertex stays convex at its
+ * corners: evens out the angles that the patches' transfinite
+ * interpolation leaves along separatrices and around singular points. */
+static sq_status smooth(vmesh *v, sq_error *err)
+{
+    int *deg = calloc((size_t)v->nv, sizeof(int)), *fixed = calloc((size_t)v->nv, sizeof(int));
+    int *start = calloc((size_t)v->nv + 1, sizeof(int)), *adjq = malloc(sizeof(int) * 4 * (size_t)v->nq);
+    sq_status st = deg && fixed && start && adjq ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) {
+        for (int q = 0; q < v->nq; q++)
+            for (int k = 0; k < 4; k++) {
+                deg[v->quad[4 * q + k]]++;
+                if (v->side_tag[4 * q + k] >= 0) {
+                    fixed[v->quad[4 * q + k]] = 1;
+                    fixed[v->quad[4 * q + (k + 1) % 4]] = 1;
+                }
+            }
+        for (int i = 0; i < v->nv; i++) {
+            if (deg[i] != 4) fixed[i] = 1; /* singular points stay where the field put them */
+            start[i + 1] = start[i] + deg[i];
+        }
+        int *fill = calloc((size_t)v->nv, sizeof(int));
+        if (!fill) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        for (int q = 0; q < v->nq && fill; q++)
+            for (int k = 0; k < 4; k++) {
+                int a = v->quad[4 * q + k];
+                adjq[start[a] + fill[a]++] = q;
+            }
+        free(fill);
+    }
+    for (int it = 0; it < 200 && st == SQ_OK; it++) {
+        double moved = 0.0;
+        for (int i = 0; i < v->nv; i++) {
+            if (fixed[i]) continue;
+            /* average of the edge neighbours: in each quad, the two corners
+             * adjacent to i (each counted twice over its two quads) */
+            double sx = 0.0, sy = 0.0;
+            for (int t = start[i]; t < start[i + 1]; t++) {
+                const int *c = &v->quad[4 * adjq[t]];
+                int k = 0;
+                while (c[k] != i) k++;
+                sx += v->xy[2 * c[(k + 1) % 4]] + v->xy[2 * c[(k + 3) % 4]];
+                sy += v->xy[2 * c[(k + 1) % 4] + 1] + v->xy[2 * c[(k + 3) % 4] + 1];
+            }
+            double n = 2.0 * (start[i + 1] - start[i]), old[2] = {v->xy[2 * i], v->xy[2 * i + 1]};
+            v->xy[2 * i] = sx / n;
+            v->xy[2 * i + 1] = sy / n;
+            int ok = 1;
+            for (int t = start[i]; t < start[i + 1] && ok; t++) ok = quad_valid(v, adjq[t]);
+            if (!ok) {
+                v->xy[2 * i] = old[0];
+                v->xy[2 * i + 1] = old[1];
+            } else {
+                moved = fmax(moved, hypot(v->xy[2 * i] - old[0], v->xy[2 * i + 1] - old[1]));
+            }
+        }
+        if (moved < 1e-12) break;
+    }
+    free(deg);
+    free(fixed);
+    free(start);
+    free(adjq);
+    return st;
+}
+
+/* Glue the patch grids into the vertex mesh. */
+static sq_status build_vmesh(const sq_layout *L, patch_grid *grids, long nids, vmesh *v,
+                             sq_error *err)
+{
+    long *map = malloc(sizeof(long) * (size_t)(nids + 1));
+    double *gxy = malloc(sizeof(double) * 2 * (size_t)(nids + 1));
+    int nq = 0;
+    for (int q = 0; q < L->npatches; q++) nq += grids[q].NU * grids[q].NV;
+    v->quad = malloc(sizeof(int) * 4 * (size_t)(nq + 1));
+    v->patch = malloc(sizeof(int) * (size_t)(nq + 1));
+    v->side_tag = malloc(sizeof(int) * 4 * (size_t)(nq + 1));
+    if (!map || !gxy || !v->quad || !v->patch || !v->side_tag) {
+        free(map);
+        free(gxy);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    for (long i = 0; i < nids; i++) map[i] = -1;
+    for (int q = 0; q < L->npatches; q++) {
+        const patch_grid *g = &grids[q];
+        for (size_t k = 0; k < (size_t)(g->NU + 1) * (g->NV + 1); k++) {
+            map[g->gid[k]] = 0;
+            gxy[2 * g->gid[k]] = g->xy[2 * k];
+            gxy[2 * g->gid[k] + 1] = g->xy[2 * k + 1];
+        }
+    }
+    int nv = 0;
+    for (long i = 0; i < nids; i++)
+        if (map[i] == 0) map[i] = nv++;
+    v->nv = nv;
+    v->xy = malloc(sizeof(double) * 2 * (size_t)(nv + 1));
+    if (!v->xy) {
+        free(map);
+        free(gxy);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    for (long i = 0; i < nids; i++)
+        if (map[i] >= 0) {
+            v->xy[2 * map[i]] = gxy[2 * i];
+            v->xy[2 * map[i] + 1] = gxy[2 * i + 1];
+        }
+    int qq = 0;
+    for (int q = 0; q < L->npatches; q++) {
+        const patch_grid *g = &grids[q];
+        for (int b = 0; b < g->NV; b++)
+            for (int a = 0; a < g->NU; a++, qq++) {
+                int *c = &v->quad[4 * qq];
+#define GID(i, j) (int)map[g->gid[(size_t)(j) * (g->NU + 1) + (i)]]
+                c[0] = GID(a, b);
+                c[1] = GID(a + 1, b);
+                c[2] = GID(a + 1, b + 1);
+                c[3] = GID(a, b + 1);
+#undef GID
+                int *t = &v->side_tag[4 * qq];
+                t[0] = b == 0 ? g->tag[0][a] : -1;
+                t[1] = a == g->NU - 1 ? g->tag[1][b] : -1;
+                t[2] = b == g->NV - 1 ? g->tag[2][g->NU - 1 - a] : -1;
+                t[3] = a == 0 ? g->tag[3][g->NV - 1 - b] : -1;
+                v->patch[qq] = q;
+            }
+    }
+    v->nq = qq;
+    free(map);
+    free(gxy);
+    return SQ_OK;
+}
+
+/* Arc length of vertex x on CAD edge c, continued across the closing point
+ * of a closed edge towards s_ref. */
+static sq_status arc_on_edge(const cad_face *face, int c, const double x[2], double *s,
+                             sq_error *err)
+{
+    SQ_TRY(cad_face_edge_project(face, c, x, s, NULL, NULL, err));
+    return SQ_OK;
+}
+
+/* Design 4: the order-Q quads.  Element sides on the boundary follow the
+ * CAD curve between their vertices' arc lengths; other sides are straight;
+ * element interiors by transfinite interpolation of their four sides. */
+static sq_status raise_order(const cad_face *face, const vmesh *v, int Q, sq_node_kind kind,
+                             sq_quad_mesh **out, sq_error *err)
+{
+    double tau[11];
+    SQ_TRY(sub_fractions(Q, kind, tau, err));
+    /* unique sides: key (min, max) vertex, found through a per-vertex list */
+    int ns = 0, *side_of = malloc(sizeof(int) * 4 * (size_t)v->nq);
+    int *head = malloc(sizeof(int) * (size_t)v->nv), *next = malloc(sizeof(int) * 4 * (size_t)v->nq);
+    int *sa = malloc(sizeof(int) * 4 * (size_t)v->nq), *sb = malloc(sizeof(int) * 4 * (size_t)v->nq);
+    if (!side_of || !head || !next || !sa || !sb) {
+        free(side_of);
+        free(head);
+        free(next);
+        free(sa);
+        free(sb);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    for (int i = 0; i < v->nv; i++) head[i] = -1;
+    int nbnd = 0;
+    for (int q = 0; q < v->nq; q++)
+        for (int k = 0; k < 4; k++) {
+            int a = v->quad[4 * q + k], b = v->quad[4 * q + (k + 1) % 4];
+            int lo = a < b ? a : b, hi = a < b ? b : a, f = head[lo];
+            while (f >= 0 && sb[f] != hi) f = next[f];
+            if (f < 0) {
+                f = ns++;
+                sa[f] = lo;
+                sb[f] = hi;
+                next[f] = head[lo];
+                head[lo] = f;
+            }
+            side_of[4 * q + k] = f;
+            nbnd += v->side_tag[4 * q + k] >= 0;
+        }
+    long nn = (long)v->nv + (long)ns * (Q - 1) + (long)v->nq * (Q - 1) * (Q - 1);
+    sq_quad_mesh *m = NULL;
+    sq_status st = sq_quad_mesh_create(Q, kind, (int)nn, v->nq, nbnd, &m, err);
+    double *sidexy = st == SQ_OK ? malloc(sizeof(double) * 2 * ((size_t)ns * (Q + 1) + 1)) : NULL;
+    int *done = st == SQ_OK ? calloc((size_t)ns + 1, sizeof(int)) : NULL;
+    if (st == SQ_OK && (!sidexy || !done)) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) memcpy(m->xy, v->xy, sizeof(double) * 2 * (size_t)v->nv);
+    int b = 0;
+    for (int q = 0; q < v->nq && st == SQ_OK; q++) {
+        double S[4][11][2]; /* side k nodes in the element's walking direction */
+        for (int k = 0; k < 4 && st == SQ_OK; k++) {
+            int a = v->quad[4 * q + k], c = v->quad[4 * q + (k + 1) % 4], f = side_of[4 * q + k];
+            int tag = v->side_tag[4 * q + k];
+            if (!done[f]) { /* nodes from sa[f] to sb[f] */
+                const double *A = &v->xy[2 * sa[f]], *B = &v->xy[2 * sb[f]];
+                double *P = &sidexy[2 * (size_t)f * (Q + 1)];
+                double s0 = 0.0, s1 = 0.0;
+                if (tag >= 0) {
+                    st = arc_on_edge(face, tag, A, &s0, err);
+                    if (st == SQ_OK) st = arc_on_edge(face, tag, B, &s1, err);
+                    /* a closed edge: the shorter way round */
+                    double Lc = cad_face_edge_length(face, tag);
+                    if (st == SQ_OK && fabs(s1 - s0) > 0.5 * Lc) {
+                        if (s1 > s0) s0 += Lc;
+                        else s1 += Lc;
+                    }
+                }
+                for (int i = 0; i <= Q && st == SQ_OK; i++) {
+                    if (tag >= 0 && i > 0 && i < Q) {
+                        double s = s0 + tau[i] * (s1 - s0), Lc = cad_face_edge_length(face, tag);
+                        if (s > Lc) s -= Lc;
+                        st = cad_face_edge_eval(face, tag, s, &P[2 * i], NULL, NULL, err);
+                    } else {
+                        P[2 * i] = A[0] + tau[i] * (B[0] - A[0]);
+                        P[2 * i + 1] = A[1] + tau[i] * (B[1] - A[1]);
+                    }
+                }
+                if (st == SQ_OK) {
+                    P[0] = A[0], P[1] = A[1], P[2 * Q] = B[0], P[2 * Q + 1] = B[1];
+                    for (int i = 1; i < Q; i++) {
+                        long id = v->nv + (long)f * (Q - 1) + (i - 1);
+                        m->xy[2 * id] = P[2 * i];
+                        m->xy[2 * id + 1] = P[2 * i + 1];
+                    }
+                }
+                done[f] = 1;
+            }
+            const double *P = &sidexy[2 * (size_t)f * (Q + 1)];
+            int fwd = sa[f] == a;
+            (void)c;
+            for (int i = 0; i <= Q; i++) {
+                int ii = fwd ? i : Q - i;
+                S[k][i][0] = P[2 * ii];
+                S[k][i][1] = P[2 * ii + 1];
+            }
+            if (tag >= 0) {
+                m->bnd_quad[b] = q;
+                m->bnd_side[b] = k;
+                m->bnd_tag[b] = tag;
+                b++;
+            }
+        }
+        if (st != SQ_OK) break;
+        int *cn = &m->conn[(size_t)q * (Q + 1) * (Q + 1)];
+        for (int j = 0; j <= Q; j++)
+            for (int i = 0; i <= Q; i++) {
+                int id;
+                if ((i == 0 || i == Q) && (j == 0 || j == Q)) {
+                    int corner = j == 0 ? (i == 0 ? 0 : 1) : (i == Q ? 2 : 3);
+                    id = v->quad[4 * q + corner];
+                } else if (j == 0 || i == Q || j == Q || i == 0) {
+                    /* side node: side k at its own index t */
+                    int k = j == 0 ? 0 : i == Q ? 1 : j == Q ? 2 : 3;
+                    int t = k == 0 ? i : k == 1 ? j : k == 2 ? Q - i : Q - j;
+                    int f = side_of[4 * q + k], fwd = sa[f] == v->quad[4 * q + k];
+                    id = v->nv + f * (Q - 1) + ((fwd ? t : Q - t) - 1);
+                } else {
+                    id = v->nv + ns * (Q - 1) + q * (Q - 1) * (Q - 1) + (j - 1) * (Q - 1) + (i - 1);
+                    /* transfinite interpolation of the four sides at (tau_i, tau_j) */
+                    double u = tau[i], w = tau[j];
+                    const double *B0 = S[0][i], *T0 = S[2][Q - i], *L0 = S[3][Q - j], *R0 = S[1][j];
+                    const double *c00 = S[0][0], *c10 = S[1][0], *c11 = S[2][0], *c01 = S[3][0];
+                    for (int d = 0; d < 2; d++)
+                        m->xy[2 * id + d] = (1 - w) * B0[d] + w * T0[d] + (1 - u) * L0[d] +
+                                            u * R0[d] -
+                                            ((1 - u) * (1 - w) * c00[d] + u * (1 - w) * c10[d] +
+                                             u * w * c11[d] + (1 - u) * w * c01[d]);
+                }
+                cn[sq_quad_node(Q, i, j)] = id;
+            }
+        m->patch[q] = v->patch[q];
+    }
+    free(side_of);
+    free(head);
+    free(next);
+    free(sa);
+    free(sb);
+    free(sidexy);
+    free(done);
+    if (st != SQ_OK) {
+        sq_quad_mesh_free(&m);
+        return st;
+    }
+    int ntags = cad_face_num_edges(face);
+    for (int k = 0; k < m->nbnd; k++)
+        if (m->bnd_tag[k] + 1 > ntags) ntags = m->bnd_tag[k] + 1;
+    m->ntags = ntags;
+    *out = m;
+    return SQ_OK;
+}
+
+sq_status sq_mesh_layout(const cad_face *face, const sq_layout *L, const sq_mesher_options *opt,
+                         sq_quad_mesh **out, sq_error *err)
+{
+    *out = NULL;
+    int Q = opt->order;
+    if (Q < 1 || Q > 10) return SQ_FAIL(err, SQ_ERR_USAGE, "quad order %d outside 1..10", Q);
+    for (int q = 0; q < L->npatches; q++)
+        if (!is_quad(&L->patches[q]))
+            return SQ_FAIL(err, SQ_ERR_LAYOUT, "patch %d is not a quad (%d corners)", q,
+                           L->patches[q].ncorners);
+    double size = opt->size > 0.0 ? opt->size : sqrt(L->face_area) / 8.0;
+    edge_nodes en = {0};
+    patch_grid *grids = calloc((size_t)L->npatches + 1, sizeof *grids);
+    en.n = malloc(sizeof(int) * ((size_t)L->nedges + 1));
+    en.base = malloc(sizeof(long) * ((size_t)L->nedges + 1));
+    en.pts = calloc((size_t)L->nedges + 1, sizeof(double *));
+    sq_status st = grids && en.n && en.base && en.pts ? SQ_OK
+                                                      : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) st = quantize(L, size, en.n, err);
+    /* Design 2: the vertices of every edge, once, by arc length; ids: the
+     * layout's nodes first */
+    long next_id = L->nnodes;
+    for (int e = 0; e < L->nedges && st == SQ_OK; e++) {
+        int n = en.n[e];
+        en.pts[e] = malloc(sizeof(double) * 2 * (size_t)(n + 1));
+        if (!en.pts[e]) {
+            st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+            break;
+        }
+        for (int k = 1; k < n && st == SQ_OK; k++)
+            st = sq_layout_edge_point(L, face, e, (double)k / n, &en.pts[e][2 * k], err);
+        /* the ends are the layout's nodes, exactly */
+        en.pts[e][0] = L->nodes[L->edges[e].n0].x;
+        en.pts[e][1] = L->nodes[L->edges[e].n0].y;
+        en.pts[e][2 * n] = L->nodes[L->edges[e].n1].x;
+        en.pts[e][2 * n + 1] = L->nodes[L->edges[e].n1].y;
+        en.base[e] = next_id;
+        next_id += n - 1;
+    }
+    for (int q = 0; q < L->npatches && st == SQ_OK; q++)
+        st = fill_patch(L, &en, 1, q, &next_id, &grids[q], err);
+    vmesh v = {0};
+    if (st == SQ_OK) st = build_vmesh(L, grids, next_id, &v, err);
+    if (st == SQ_OK) st = smooth(&v, err);
+    if (st == SQ_OK) st = raise_order(face, &v, Q, opt->nodes, out, err);
+    vmesh_free(&v);
+    for (int q = 0; grids && q < L->npatches; q++) patch_grid_free(&grids[q]);
+    free(grids);
+    edge_nodes_free(&en, L->nedges);
+    return st;
+}

@@ -1,0 +1,42 @@
+/* semquad — a block-structured high-order quad mesh of a valid layout
+ * (Jezdimirović 2021 §5.3 and §7; Marcon 2019 §3.4).
+ *
+ * design:
+ *  1. chord quantization: every layout edge gets n_e >= 1 segments, first
+ *     round(length / size); then, patch by patch, opposite sides are made
+ *     equal by adding segments to the smaller side (to its edge with the
+ *     largest length per segment), repeated until every patch matches — the
+ *     additions travel along the layout's chords;
+ *  2. each edge's nodes are placed once, by arc length (sub-segment nodes
+ *     at Gauss–Lobatto–Legendre or equispaced fractions), exactly on the CAD
+ *     curve for boundary edges: the patches sharing an edge share its nodes,
+ *     so the mesh is conforming by construction;
+ *  3. each patch is filled by discrete transfinite interpolation of its four
+ *     sides (blending parameters from the sides' arc-length fractions), then
+ *     the interior nodes are smoothed (Winslow, Marcon §3.4's suggestion) if
+ *     an element has a non-positive Jacobian;
+ *  4. quads of order Q take their (Q+1)^2 nodes from that grid. */
+#ifndef SQ_QUAD_MESHER_H
+#define SQ_QUAD_MESHER_H
+
+#include "layout.h"
+#include "quad_mesh.h"
+
+typedef struct {
+    int order;          /* Q, 1..10 (default 4) */
+    double size;        /* target element size; <= 0: sqrt(area)/8 */
+    sq_node_kind nodes; /* default GLL */
+    /* boundary layers: geometric grading of the chords normal to boundary
+     * CAD edges bl_edges[nbl] (Marcon §3.4) */
+    int nbl;
+    const int *bl_edges;
+    double bl_first, bl_ratio;
+    int bl_layers;
+} sq_mesher_options;
+
+void sq_mesher_options_default(sq_mesher_options *opt);
+
+sq_status sq_mesh_layout(const cad_face *face, const sq_layout *L, const sq_mesher_options *opt,
+                         sq_quad_mesh **out, sq_error *err);
+
+#endif

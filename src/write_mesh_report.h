@@ -1,0 +1,17 @@
+/* semquad — the JSON report of `semquad mesh` (../shared/DESIGN.md, "The
+ * report"): input, field, singularities, corners, layout, mesh, timings. */
+#ifndef SQ_WRITE_MESH_REPORT_H
+#define SQ_WRITE_MESH_REPORT_H
+
+#include "layout_pipeline.h"
+#include "quad_mesh.h"
+
+typedef struct {
+    double read, triangulate, solve, critical_points, trace, layout, mesh, write;
+} sq_mesh_timings;
+
+sq_status sq_write_mesh_report(const char *path, const char *input, int face,
+                               const sq_layout_result *r, const sq_quad_mesh *m,
+                               const sq_quad_quality *q, const sq_mesh_timings *t, sq_error *err);
+
+#endif
