@@ -27,6 +27,10 @@ sq_status sq_cmd_layout(int argc, char **argv, sq_error *err)
         } else if (!strcmp(a, "--size")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_double(a, val, 1e-300, 1e300, &opt.field.tri.size, err));
+        } else if (!strcmp(a, "--singularities")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &opt.singularities, err));
+        } else if (!strcmp(a, "--allow-misaligned")) {
+            opt.allow_misaligned = 1;
         } else if (!strcmp(a, "--merge-distance")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_double(a, val, 0.1, 1000.0, &opt.trace.merge_distance, err));

@@ -59,6 +59,10 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
         } else if (!strcmp(a, "--method")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_method(val, &lo.field.method, err));
+        } else if (!strcmp(a, "--singularities")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &lo.singularities, err));
+        } else if (!strcmp(a, "--allow-misaligned")) {
+            lo.allow_misaligned = 1;
         } else if (!strcmp(a, "--merge-distance")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_double(a, val, 0.1, 1000.0, &lo.trace.merge_distance, err));
@@ -100,15 +104,14 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
     sq_layout_result r;
     sq_status st = sq_layout_run(f, &lo, &r, err);
     if (st == SQ_OK) {
-        const sq_field_analysis *a = &r.analysis;
-        t.triangulate = a->t_triangulate;
-        t.solve = a->t_solve;
-        t.critical_points = a->t_critical;
+        t.triangulate = r.field.t_triangulate;
+        t.solve = r.field.t_solve;
+        t.critical_points = r.field.t_critical;
         t.trace = r.t_trace;
         t.layout = r.t_layout;
         if (!quiet) {
-            fprintf(stderr, "semquad: guiding field %s P=%d on %d triangles (%.3f s)\n",
-                    a->field.method == SEM_CG ? "CG" : "DG", a->field.order, a->tri.mesh->ntris,
+            fprintf(stderr, "semquad: %s field %s P=%d on %d triangles (%.3f s)\n", r.field.kind,
+                    r.field.method == SEM_CG ? "CG" : "DG", r.field.order, r.field.triangles,
                     t.triangulate + t.solve);
             fprintf(stderr, "semquad: %d singular points, %d separatrices, %d quad patches (%.3f s)\n",
                     r.nsing, r.layout.stats.separatrices, r.layout.stats.quad_patches,

@@ -5,14 +5,17 @@
 
 void sq_layout_options_default(sq_layout_options *opt)
 {
+    memset(opt, 0, sizeof *opt);
     sq_field_options_default(&opt->field);
     sq_trace_options_default(&opt->trace);
+    sq_htheta_options_default(&opt->htheta);
 }
 
 void sq_layout_result_free(sq_layout_result *r)
 {
     if (!r) return;
     sq_layout_free(&r->layout);
+    sq_htheta_free(&r->htheta);
     sq_separatrix_set_free(&r->traced);
     free(r->sing);
     free(r->vertex_quads);
@@ -20,18 +23,13 @@ void sq_layout_result_free(sq_layout_result *r)
     memset(r, 0, sizeof *r);
 }
 
-sq_status sq_layout_run(const cad_face *face, const sq_layout_options *opt, sq_layout_result *out,
-                        sq_error *err)
+/* The guiding field's pattern: its critical points and corner valences. */
+static sq_status guiding_pattern(sq_layout_result *out, sq_error *err)
 {
-    memset(out, 0, sizeof *out);
-    SQ_TRY(sq_field_analyse(face, &opt->field, &out->analysis, err));
     const sq_field_analysis *a = &out->analysis;
     out->sing = calloc((size_t)a->npoints + 1, sizeof *out->sing);
     out->vertex_quads = calloc((size_t)a->info.nvertices + 1, sizeof *out->vertex_quads);
-    if (!out->sing || !out->vertex_quads) {
-        sq_layout_result_free(out);
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    }
+    if (!out->sing || !out->vertex_quads) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     /* Regular points (index 0) carry no separatrix; points on the boundary
      * are reported by the field stage but cannot start a layout. */
     for (int k = 0; k < a->npoints; k++)
@@ -39,14 +37,68 @@ sq_status sq_layout_run(const cad_face *face, const sq_layout_options *opt, sq_l
             out->sing[out->nsing++] = (sq_singularity){a->points[k].x, a->points[k].y,
                                                        a->points[k].valence, SQ_ORIGIN_CRITICAL};
     for (int k = 0; k < a->info.nvertices; k++) out->vertex_quads[k] = a->corners[k].valence;
-    sq_cross_field field = sq_guiding_cross_field(&a->field);
+    out->info = &a->info;
+    out->field = (sq_field_summary){"guiding", a->field.method, a->field.order,
+                                    a->tri.mesh->ntris, a->field.ndofs, a->t_triangulate,
+                                    a->t_solve, a->t_critical};
+    return SQ_OK;
+}
+
+/* The imposed pattern's H/θ field (Jezdimirović 2021 §4-5). */
+static sq_status htheta_pattern(const cad_face *face, const sq_layout_options *opt,
+                                sq_layout_result *out, sq_error *err)
+{
+    sq_pattern pat = {0};
+    sq_status st;
+    if (!strcmp(opt->singularities, "natural")) {
+        SQ_TRY(sq_field_analyse(face, &opt->field, &out->analysis, err));
+        st = sq_pattern_from_analysis(&out->analysis, &pat, err);
+    } else {
+        st = sq_pattern_read(opt->singularities, &pat, err);
+    }
+    if (st == SQ_OK) st = sq_htheta_compute(face, &pat, &opt->htheta, &out->htheta, err);
+    sq_pattern_free(&pat);
+    if (st == SQ_OK) st = sq_htheta_check_alignment(&out->htheta, opt->allow_misaligned, err);
+    if (st != SQ_OK) return st;
+    const sq_htheta *h = &out->htheta;
+    out->sing = calloc((size_t)h->npoints + 1, sizeof *out->sing);
+    out->vertex_quads = calloc((size_t)h->info.nvertices + 1, sizeof *out->vertex_quads);
+    if (!out->sing || !out->vertex_quads) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < h->npoints; k++)
+        if (h->points[k].valence != 4)
+            out->sing[out->nsing++] = (sq_singularity){h->points[k].x, h->points[k].y,
+                                                       h->points[k].valence, h->points[k].origin};
+    for (int k = 0; k < h->info.nvertices; k++) out->vertex_quads[k] = h->balance.quads[k];
+    out->info = &h->info;
+    out->field = (sq_field_summary){"H-theta", SEM_CG, opt->htheta.order, h->tri.mesh->ntris,
+                                    0, h->t_triangulate, h->t_solve, 0.0};
+    return SQ_OK;
+}
+
+sq_status sq_layout_run(const cad_face *face, const sq_layout_options *opt, sq_layout_result *out,
+                        sq_error *err)
+{
+    memset(out, 0, sizeof *out);
+    sq_status st;
+    sq_cross_field field;
+    if (opt->singularities) {
+        st = htheta_pattern(face, opt, out, err);
+        field = sq_htheta_cross_field(&out->htheta);
+    } else {
+        st = sq_field_analyse(face, &opt->field, &out->analysis, err);
+        if (st == SQ_OK) st = guiding_pattern(out, err);
+        field = sq_guiding_cross_field(&out->analysis.field);
+    }
+    if (st != SQ_OK) {
+        sq_layout_result_free(out);
+        return st;
+    }
     double t0 = sq_now();
-    sq_status st = sq_trace_separatrices_stats(&field, face, &a->info, out->vertex_quads,
-                                               out->nsing, out->sing, &opt->trace, &out->traced,
-                                               &out->trace_stats, err);
+    st = sq_trace_separatrices_stats(&field, face, out->info, out->vertex_quads, out->nsing,
+                                     out->sing, &opt->trace, &out->traced, &out->trace_stats, err);
     double t1 = sq_now();
     if (st == SQ_OK)
-        st = sq_layout_build(face, &a->info, out->vertex_quads, out->nsing, out->sing,
+        st = sq_layout_build(face, out->info, out->vertex_quads, out->nsing, out->sing,
                              &out->traced, &field, &opt->trace, &out->layout, err);
     out->t_trace = t1 - t0;
     out->t_layout = sq_now() - t1;

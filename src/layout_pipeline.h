@@ -6,20 +6,39 @@
 #define SQ_LAYOUT_PIPELINE_H
 
 #include "field_analysis.h"
+#include "htheta_field.h"
 #include "layout.h"
 
 typedef struct {
-    sq_field_options field;
+    sq_field_options field;   /* the guiding field (also for `natural`) */
     sq_trace_options trace;
+    /* NULL: trace the guiding field (Marcon 2019); "natural" or the path of
+     * a pattern file: trace the H/θ cross field of that pattern
+     * (Jezdimirović 2021) */
+    const char *singularities;
+    sq_htheta_options htheta;
+    int allow_misaligned;     /* trace even if a hole breaks holonomy */
 } sq_layout_options;
+
+/* What the field stage was, for reports. */
+typedef struct {
+    const char *kind;  /* "guiding" or "H-theta" */
+    sem_method method;
+    int order, triangles;
+    long dofs;
+    double t_triangulate, t_solve, t_critical;
+} sq_field_summary;
 
 void sq_layout_options_default(sq_layout_options *opt);
 
 typedef struct {
-    sq_field_analysis analysis;
+    sq_field_analysis analysis; /* guiding field (zeroed for a pattern file) */
+    sq_htheta htheta;           /* H/θ path only */
+    const sq_face_info *info;   /* the face, from whichever stage ran */
+    sq_field_summary field;
     int nsing;
     sq_singularity *sing;   /* the pattern traced from */
-    int *vertex_quads;      /* per face vertex */
+    int *vertex_quads;      /* per face vertex: quads there (n) */
     sq_separatrix_set traced; /* as traced, before corrections */
     sq_trace_stats trace_stats;
     sq_layout layout;
@@ -28,7 +47,8 @@ typedef struct {
 } sq_layout_result;
 
 /* On SQ_ERR_LAYOUT the result still holds the last layout (for pictures
- * and reports); free it in every case. */
+ * and reports); free it in every case.  SQ_ERR_PATTERN for a refused
+ * pattern or (without allow_misaligned) a hole that breaks holonomy. */
 sq_status sq_layout_run(const cad_face *face, const sq_layout_options *opt, sq_layout_result *out,
                         sq_error *err);
 void sq_layout_result_free(sq_layout_result *r); /* frees, zeroes the struct */

@@ -1,6 +1,7 @@
 #include "outfile.h"
 
 #include <errno.h>
+#include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
 #include <unistd.h>
@@ -10,16 +11,22 @@ sq_status sq_outfile_open(const char *path, sq_outfile *out, sq_error *err)
     memset(out, 0, sizeof *out);
     size_t n = strlen(path);
     out->path = strdup(path);
-    out->tmp = malloc(n + 16);
+    out->tmp = malloc(n + 32);
     if (!out->path || !out->tmp) {
         sq_outfile_abort(out);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
-    /* same directory as the target, so the rename is atomic */
-    snprintf(out->tmp, n + 16, "%s.tmpXXXXXX", path);
-    int fd = mkstemp(out->tmp);
+    /* same directory as the target, so the rename is atomic; created with
+     * O_EXCL and mode 0666 so the umask applies as for any new file
+     * (mkstemp would leave it readable by its owner only) */
+    int fd = -1, e = 0;
+    for (int k = 0; k < 100 && fd < 0; k++) {
+        snprintf(out->tmp, n + 32, "%s.tmp%ld.%d", path, (long)getpid(), k);
+        fd = open(out->tmp, O_WRONLY | O_CREAT | O_EXCL, 0666);
+        e = errno;
+        if (fd < 0 && e != EEXIST) break;
+    }
     if (fd < 0) {
-        int e = errno;
         free(out->tmp);
         out->tmp = NULL;
         sq_outfile_abort(out);

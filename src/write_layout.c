@@ -46,14 +46,14 @@ void sq_json_layout_keys(sq_json *j, const sq_layout_result *r)
     sq_json_end_array(j);
     sq_json_key(j, "corners");
     sq_json_begin_array(j);
-    const sq_face_info *info = &r->analysis.info;
+    const sq_face_info *info = r->info;
     for (int k = 0; k < info->nvertices; k++) {
         if (info->vertices[k].smooth) continue;
         sq_json_begin_object(j);
         key_num(j, "x", info->vertices[k].x);
         key_num(j, "y", info->vertices[k].y);
         key_num(j, "angle_deg", info->vertices[k].angle_deg);
-        key_int(j, "valence", r->analysis.corners[k].valence);
+        key_int(j, "valence", r->vertex_quads[k]);
         sq_json_end_object(j);
     }
     sq_json_end_array(j);
@@ -77,37 +77,41 @@ void sq_json_layout_keys(sq_json *j, const sq_layout_result *r)
     sq_json_end_object(j);
 }
 
+void sq_json_field_summary(sq_json *j, const sq_layout_result *r)
+{
+    key_int(j, "chi", r->info->chi);
+    sq_json_key(j, "field");
+    sq_json_begin_object(j);
+    sq_json_key(j, "kind");
+    sq_json_string(j, r->field.kind);
+    sq_json_key(j, "method");
+    sq_json_string(j, r->field.method == SEM_CG ? "cg" : "dg");
+    key_int(j, "order", r->field.order);
+    key_int(j, "triangles", r->field.triangles);
+    if (r->field.dofs > 0) key_int(j, "dofs", r->field.dofs);
+    sq_json_end_object(j);
+}
+
 sq_status sq_write_layout_report(const char *path, const char *input, int face,
                                  const sq_layout_result *r, double t_read, double t_split,
                                  sq_error *err)
 {
     sq_outfile f;
     SQ_TRY(sq_outfile_open(path, &f, err));
-    const sq_field_analysis *a = &r->analysis;
     sq_json j;
     sq_json_init(&j, f.fp);
     sq_json_begin_object(&j);
     sq_json_key(&j, "input");
     sq_json_string(&j, input);
     key_int(&j, "face", face);
-    key_int(&j, "chi", a->info.chi);
-    sq_json_key(&j, "field");
-    sq_json_begin_object(&j);
-    sq_json_key(&j, "kind");
-    sq_json_string(&j, "guiding");
-    sq_json_key(&j, "method");
-    sq_json_string(&j, a->field.method == SEM_CG ? "cg" : "dg");
-    key_int(&j, "order", a->field.order);
-    key_int(&j, "triangles", a->tri.mesh->ntris);
-    key_int(&j, "dofs", a->field.ndofs);
-    sq_json_end_object(&j);
+    sq_json_field_summary(&j, r);
     sq_json_layout_keys(&j, r);
     sq_json_key(&j, "timings_s");
     sq_json_begin_object(&j);
     key_num(&j, "read", t_read);
-    key_num(&j, "triangulate", a->t_triangulate);
-    key_num(&j, "solve", a->t_solve);
-    key_num(&j, "critical_points", a->t_critical);
+    key_num(&j, "triangulate", r->field.t_triangulate);
+    key_num(&j, "solve", r->field.t_solve);
+    key_num(&j, "critical_points", r->field.t_critical);
     key_num(&j, "trace", r->t_trace);
     key_num(&j, "layout", r->t_layout);
     if (t_split >= 0.0) key_num(&j, "split", t_split);
@@ -161,7 +165,7 @@ sq_status sq_write_layout_svg(const char *path, const sq_layout_result *r, sq_er
     sq_outfile f;
     SQ_TRY(sq_outfile_open(path, &f, err));
     sq_svg svg;
-    sq_svg_begin(&svg, f.fp, r->analysis.info.bbox, 900.0, 700.0);
+    sq_svg_begin(&svg, f.fp, r->info->bbox, 900.0, 700.0);
     for (int p = 0; p < L->npatches; p++) {
         double *xy = NULL;
         int n = patch_polygon(L, &L->patches[p], &xy);
@@ -197,7 +201,7 @@ sq_status sq_write_layout_svg(const char *path, const sq_layout_result *r, sq_er
              r->valid ? "valid" : "INVALID", st->separatrices, st->quad_patches, st->patches,
              st->limit_cycles_cut, st->t_junctions, st->triangles_repaired, st->annuli_cut,
              st->duplicates_removed, st->crossings_split);
-    sq_svg_text(&svg, r->analysis.info.bbox[0], r->analysis.info.bbox[1], 0.0, 16.0, 11.0,
+    sq_svg_text(&svg, r->info->bbox[0], r->info->bbox[1], 0.0, 16.0, 11.0,
                 "#333333", caption);
     sq_svg_end(&svg);
     return sq_outfile_commit(&f, err);

@@ -12,6 +12,9 @@
  * midpoints) as "singularities", plus "corners". */
 void sq_json_layout_keys(sq_json *j, const sq_layout_result *r);
 
+/* "chi" and the "field" object (kind, method, order, triangles, dofs). */
+void sq_json_field_summary(sq_json *j, const sq_layout_result *r);
+
 sq_status sq_write_layout_report(const char *path, const char *input, int face,
                                  const sq_layout_result *r, double t_read, double t_split,
                                  sq_error *err);

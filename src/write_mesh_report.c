@@ -21,24 +21,13 @@ sq_status sq_write_mesh_report(const char *path, const char *input, int face,
 {
     sq_outfile f;
     SQ_TRY(sq_outfile_open(path, &f, err));
-    const sq_field_analysis *a = &r->analysis;
     sq_json j;
     sq_json_init(&j, f.fp);
     sq_json_begin_object(&j);
     sq_json_key(&j, "input");
     sq_json_string(&j, input);
     key_int(&j, "face", face);
-    key_int(&j, "chi", a->info.chi);
-    sq_json_key(&j, "field");
-    sq_json_begin_object(&j);
-    sq_json_key(&j, "kind");
-    sq_json_string(&j, "guiding");
-    sq_json_key(&j, "method");
-    sq_json_string(&j, a->field.method == SEM_CG ? "cg" : "dg");
-    key_int(&j, "order", a->field.order);
-    key_int(&j, "triangles", a->tri.mesh->ntris);
-    key_int(&j, "dofs", a->field.ndofs);
-    sq_json_end_object(&j);
+    sq_json_field_summary(&j, r);
     sq_json_layout_keys(&j, r);
     sq_json_key(&j, "mesh");
     sq_json_begin_object(&j);

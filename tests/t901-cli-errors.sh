@@ -50,6 +50,28 @@ expect 3 "STEP without a face" triangulate "$tmp/noface.step" $outs
 expect 3 "unknown extension" info "$ex/../README.md"
 expect 4 "sphere (non-planar face)" triangulate "$ex/sphere.step" $outs
 expect 7 "unwritable output" triangulate "$ex/half_disc.step" -o "$tmp/no/such/dir/o.vtu"
+expect 2 "unknown mesh format" mesh "$ex/half_disc.step" -o "$tmp/o.xyz"
+expect 2 "mesh order out of range" mesh "$ex/half_disc.step" --order 11 -o "$tmp/o.msh"
+expect 4 "mesh of a sphere" mesh "$ex/sphere.step" -o "$tmp/o.msh" --report "$tmp/o.json"
+expect 7 "unwritable mesh" mesh "$ex/half_disc.step" -o "$tmp/no/such/dir/o.msh" -q
+expect 2 "bad merge distance" layout "$ex/half_disc.step" --merge-distance -1
+
+# layout: the patches as STEP re-import as 4 faces (Marcon's half disc)
+"$sq" layout "$ex/half_disc.step" -o "$tmp/p.step" --report "$tmp/l.json" -q ||
+    { echo "layout failed"; fails=$((fails + 1)); }
+"$sq" info "$tmp/p.step" | grep -q "4 faces" || { echo "patches STEP is not 4 faces"; fails=$((fails + 1)); }
+grep -q '"quad_patches": 4' "$tmp/l.json" || { echo "layout report lacks 4 quad patches"; fails=$((fails + 1)); }
+# mesh: each format by extension, a quality line on stdout, progress on stderr
+for ext in msh xml vtu; do
+    "$sq" mesh "$ex/half_disc.step" --size 0.3 -o "$tmp/m.$ext" >"$tmp/out" 2>"$tmp/err" ||
+        { echo "mesh -o m.$ext failed: $(cat "$tmp/err")"; fails=$((fails + 1)); }
+    [ -s "$tmp/m.$ext" ] || { echo "mesh: m.$ext missing"; fails=$((fails + 1)); }
+    grep -q "quads, order 4" "$tmp/out" || { echo "mesh: no summary line"; fails=$((fails + 1)); }
+    grep -q "singular points" "$tmp/err" || { echo "mesh: no progress lines"; fails=$((fails + 1)); }
+done
+head -2 "$tmp/m.msh" | grep -q '^4.1 0 8' || { echo "MSH version line"; fails=$((fails + 1)); }
+"$sq" mesh "$ex/half_disc.step" --size 0.3 -q -o "$tmp/q.msh" 2>"$tmp/err" >/dev/null
+[ -s "$tmp/err" ] && { echo "mesh -q wrote to stderr"; fails=$((fails + 1)); }
 
 # the good path: all three outputs, nothing on stderr
 "$sq" triangulate "$tmp/upper.STEP" --order 6 $outs >"$tmp/out" 2>"$tmp/err" || {
@@ -58,6 +80,8 @@ expect 7 "unwritable output" triangulate "$ex/half_disc.step" -o "$tmp/no/such/d
 for f in o.vtu o.svg o.json; do
     [ -s "$tmp/$f" ] || { echo "good run: $f missing"; fails=$((fails + 1)); }
 done
+[ "$(stat -c %a "$tmp/o.vtu")" = "$(printf '%o' $((0666 & ~$(umask))))" ] ||
+    { echo "output mode $(stat -c %a "$tmp/o.vtu") ignores the umask $(umask)"; fails=$((fails + 1)); }
 grep -q '"order": 6' "$tmp/o.json" || { echo "report lacks order 6"; fails=$((fails + 1)); }
 grep -q 'NumberOfCells' "$tmp/o.vtu" || { echo "VTU lacks cells"; fails=$((fails + 1)); }
 ls "$tmp" | grep -q tmp && { echo "temporary file left behind"; fails=$((fails + 1)); }
