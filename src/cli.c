@@ -30,6 +30,25 @@ sq_status sq_cli_double(const char *opt, const char *val, double lo, double hi, 
     return SQ_OK;
 }
 
+sq_status sq_cli_int_list(const char *opt, const char *val, int lo, int hi, int *out, int max,
+                          int *n, sq_error *err)
+{
+    char buf[32];
+    *n = 0;
+    for (const char *p = val; *p;) {
+        size_t len = strcspn(p, ",");
+        if (len == 0 || len >= sizeof buf || *n == max)
+            return SQ_FAIL(err, SQ_ERR_USAGE, "%s expects up to %d comma-separated integers, got '%s'",
+                           opt, max, val);
+        memcpy(buf, p, len);
+        buf[len] = '\0';
+        SQ_TRY(sq_cli_int(opt, buf, lo, hi, &out[(*n)++], err));
+        p += len + (p[len] == ',');
+    }
+    if (*n == 0) return SQ_FAIL(err, SQ_ERR_USAGE, "%s expects a list of integers", opt);
+    return SQ_OK;
+}
+
 sq_status sq_cli_method(const char *val, sq_method *out, sq_error *err)
 {
     if (!strcmp(val, "auto")) *out = SQ_METHOD_AUTO;

@@ -11,6 +11,10 @@ sq_status sq_cli_int(const char *opt, const char *val, int lo, int hi, int *out,
 sq_status sq_cli_double(const char *opt, const char *val, double lo, double hi, double *out,
                         sq_error *err);
 
+/* Comma-separated integers in lo..hi into out[max]; *n their count. */
+sq_status sq_cli_int_list(const char *opt, const char *val, int lo, int hi, int *out, int max,
+                          int *n, sq_error *err);
+
 /* --method value: auto, cg or dg. */
 sq_status sq_cli_method(const char *val, sq_method *out, sq_error *err);
 

@@ -1,5 +1,6 @@
 /* semquad mesh FILE [--face N] [--order Q] [--size h] [--field-order P]
  *   [--method auto|cg|dg] [--merge-distance K] [--nodes gll|equispaced]
+ *   [--bl E1,E2,... --bl-first d --bl-ratio r --bl-layers n]
  *   [-o out.msh|.xml|.vtu] [--svg F] [--report F] [-q] */
 #include "cli.h"
 #include "quad_mesher.h"
@@ -37,7 +38,7 @@ static void progress(int quiet, const char *fmt, const char *a, double t)
 sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
 {
     const char *path = NULL, *outp = NULL, *svg = NULL, *report = NULL, *val;
-    int face = -1, quiet = 0;
+    int face = -1, quiet = 0, bl[64];
     sq_layout_options lo;
     sq_layout_options_default(&lo);
     sq_mesher_options mo;
@@ -66,6 +67,19 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
         } else if (!strcmp(a, "--merge-distance")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_double(a, val, 0.1, 1000.0, &lo.trace.merge_distance, err));
+        } else if (!strcmp(a, "--bl")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            SQ_TRY(sq_cli_int_list(a, val, 0, 1000000, bl, (int)(sizeof bl / sizeof *bl), &mo.nbl, err));
+            mo.bl_edges = bl;
+        } else if (!strcmp(a, "--bl-first")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            SQ_TRY(sq_cli_double(a, val, 1e-300, 1e300, &mo.bl_first, err));
+        } else if (!strcmp(a, "--bl-ratio")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            SQ_TRY(sq_cli_double(a, val, 1.0, 10.0, &mo.bl_ratio, err));
+        } else if (!strcmp(a, "--bl-layers")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            SQ_TRY(sq_cli_int(a, val, 1, 1000, &mo.bl_layers, err));
         } else if (!strcmp(a, "--nodes")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             if (!strcmp(val, "gll")) mo.nodes = SQ_NODES_GLL;
@@ -88,6 +102,8 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
         }
     }
     if (!path) return SQ_FAIL(err, SQ_ERR_USAGE, "mesh: missing input file");
+    if (mo.nbl > 0 && (!(mo.bl_first > 0.0) || mo.bl_layers < 1))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--bl needs --bl-first d > 0 and --bl-layers n >= 1");
     if (outp && !ends_with(outp, ".msh") && !ends_with(outp, ".xml") && !ends_with(outp, ".vtu"))
         return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)", outp);
     lo.field.tri.order = lo.field.order < 12 ? lo.field.order : 12;
@@ -122,7 +138,7 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
     sq_quad_quality q;
     if (st == SQ_OK) {
         double t1 = sq_now();
-        st = sq_mesh_layout(f, &r.layout, &mo, &m, err);
+        st = sq_mesh_layout(f, r.info, &r.layout, &mo, &m, err);
         if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, &q, err);
         t.mesh = sq_now() - t1;
         if (st == SQ_OK && q.inverted > 0)

@@ -26,13 +26,85 @@ static long side_count(const sq_layout_patch *p, int k, const int *n)
     return c;
 }
 
-/* Design 1: chord quantization. */
-static sq_status quantize(const sq_layout *L, double size, int *n, sq_error *err)
+/* Boundary layers (Marcon 2019 §3.4): an edge leaving a boundary-layer
+ * curve is graded from that end, first segment bl_first, growing by
+ * bl_ratio over bl_layers segments, then uniform.  grade[e]: bit 1 graded
+ * from n0, bit 2 from n1. */
+static int on_bl_curve(const sq_layout *L, const sq_face_info *info, const sq_mesher_options *o,
+                       int node)
+{
+    const sq_layout_node *v = &L->nodes[node];
+    for (int b = 0; b < o->nbl; b++) {
+        if (v->kind == SQ_LNODE_FOOT && v->id == o->bl_edges[b]) return 1;
+        if (v->kind == SQ_LNODE_CORNER && (info->vertices[v->id].edge_in == o->bl_edges[b] ||
+                                           info->vertices[v->id].edge_out == o->bl_edges[b]))
+            return 1;
+    }
+    return 0;
+}
+
+static int is_bl_edge(const sq_layout *L, const sq_mesher_options *o, int e)
+{
+    for (int b = 0; b < o->nbl; b++)
+        if (L->edges[e].cad_edge == o->bl_edges[b]) return 1;
+    return 0;
+}
+
+static void bl_grading(const sq_layout *L, const sq_face_info *info, const sq_mesher_options *o,
+                       int *grade)
 {
     for (int e = 0; e < L->nedges; e++) {
-        long v = lround(L->edges[e].length / size);
-        n[e] = v < 1 ? 1 : (int)fmin((double)v, MAX_SEGMENTS);
+        grade[e] = 0;
+        if (o->nbl == 0 || is_bl_edge(L, o, e)) continue;
+        grade[e] = on_bl_curve(L, info, o, L->edges[e].n0) | 2 * on_bl_curve(L, info, o, L->edges[e].n1);
     }
+}
+
+/* Thickness of nb geometric layers. */
+static double bl_thickness(const sq_mesher_options *o, int nb)
+{
+    return o->bl_ratio == 1.0 ? o->bl_first * nb
+                              : o->bl_first * (pow(o->bl_ratio, nb) - 1.0) / (o->bl_ratio - 1.0);
+}
+
+/* Segments an edge of length len needs: its layers, then the rest at size. */
+static int edge_segments(double len, double size, int grade, const sq_mesher_options *o)
+{
+    int ends = (grade & 1) + ((grade & 2) >> 1), nb = 0;
+    double rest = len;
+    while (ends && nb < o->bl_layers && rest - ends * o->bl_first * pow(o->bl_ratio, nb) > 0.0) {
+        rest -= ends * o->bl_first * pow(o->bl_ratio, nb);
+        nb++;
+    }
+    long v = lround(rest / size);
+    return (int)fmin((double)(ends * nb + (v < 1 ? 1 : v)), MAX_SEGMENTS);
+}
+
+/* Arc-length fractions f[0..n] of an edge with n segments. */
+static void edge_fractions(double len, int n, int grade, const sq_mesher_options *o, double *f)
+{
+    int ends = (grade & 1) + ((grade & 2) >> 1), nb = 0;
+    while (ends && nb < o->bl_layers && ends * (nb + 1) < n &&
+           ends * bl_thickness(o, nb + 1) < len)
+        nb++;
+    double T = bl_thickness(o, nb) / len; /* one end's layers, as a fraction */
+    int mid = n - ends * nb;
+    for (int k = 0; k <= n; k++) f[k] = (double)k / n;
+    if (!nb) return;
+    int lo = grade & 1 ? nb : 0, hi = grade & 2 ? n - nb : n;
+    double a = grade & 1 ? T : 0.0, b = grade & 2 ? 1.0 - T : 1.0;
+    for (int k = 0; k <= n; k++) {
+        if (k <= lo && (grade & 1)) f[k] = bl_thickness(o, k) / len;
+        else if (k >= hi && (grade & 2)) f[k] = 1.0 - bl_thickness(o, n - k) / len;
+        else f[k] = a + (b - a) * (double)(k - lo) / mid;
+    }
+}
+
+/* Design 1: chord quantization. */
+static sq_status quantize(const sq_layout *L, double size, const int *grade,
+                          const sq_mesher_options *o, int *n, sq_error *err)
+{
+    for (int e = 0; e < L->nedges; e++) n[e] = edge_segments(L->edges[e].length, size, grade[e], o);
     for (int changed = 1; changed;) {
         changed = 0;
         for (int q = 0; q < L->npatches; q++) {
@@ -270,7 +342,7 @@ static int quad_valid(const vmesh *v, int q)
  * a move kept only if every quad around the vertex stays convex at its
  * corners: evens out the angles that the patches' transfinite
  * interpolation leaves along separatrices and around singular points. */
-static sq_status smooth(vmesh *v, sq_error *err)
+static sq_status smooth(vmesh *v, const int *keep, sq_error *err)
 {
     int *deg = calloc((size_t)v->nv, sizeof(int)), *fixed = calloc((size_t)v->nv, sizeof(int));
     int *start = calloc((size_t)v->nv + 1, sizeof(int)), *adjq = malloc(sizeof(int) * 4 * (size_t)v->nq);
@@ -286,6 +358,7 @@ static sq_status smooth(vmesh *v, sq_error *err)
             }
         for (int i = 0; i < v->nv; i++) {
             if (deg[i] != 4) fixed[i] = 1; /* singular points stay where the field put them */
+            if (keep && keep[i]) fixed[i] = 1;
             start[i + 1] = start[i] + deg[i];
         }
         int *fill = calloc((size_t)v->nv, sizeof(int));
@@ -555,8 +628,8 @@ static sq_status raise_order(const cad_face *face, const vmesh *v, int Q, sq_nod
     return SQ_OK;
 }
 
-sq_status sq_mesh_layout(const cad_face *face, const sq_layout *L, const sq_mesher_options *opt,
-                         sq_quad_mesh **out, sq_error *err)
+sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const sq_layout *L,
+                         const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
 {
     *out = NULL;
     int Q = opt->order;
@@ -573,7 +646,10 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_layout *L, const sq_mesh
     en.pts = calloc((size_t)L->nedges + 1, sizeof(double *));
     sq_status st = grids && en.n && en.base && en.pts ? SQ_OK
                                                       : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    if (st == SQ_OK) st = quantize(L, size, en.n, err);
+    int *grade = malloc(sizeof(int) * ((size_t)L->nedges + 1));
+    if (st == SQ_OK && !grade) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) bl_grading(L, info, opt, grade);
+    if (st == SQ_OK) st = quantize(L, size, grade, opt, en.n, err);
     /* Design 2: the vertices of every edge, once, by arc length; ids: the
      * layout's nodes first */
     long next_id = L->nnodes;
@@ -584,8 +660,15 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_layout *L, const sq_mesh
             st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
             break;
         }
+        double *f = malloc(sizeof(double) * (size_t)(n + 1));
+        if (!f) {
+            st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+            break;
+        }
+        edge_fractions(L->edges[e].length, n, grade[e], opt, f);
         for (int k = 1; k < n && st == SQ_OK; k++)
-            st = sq_layout_edge_point(L, face, e, (double)k / n, &en.pts[e][2 * k], err);
+            st = sq_layout_edge_point(L, face, e, f[k], &en.pts[e][2 * k], err);
+        free(f);
         /* the ends are the layout's nodes, exactly */
         en.pts[e][0] = L->nodes[L->edges[e].n0].x;
         en.pts[e][1] = L->nodes[L->edges[e].n0].y;
@@ -598,9 +681,24 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_layout *L, const sq_mesh
         st = fill_patch(L, &en, 1, q, &next_id, &grids[q], err);
     vmesh v = {0};
     if (st == SQ_OK) st = build_vmesh(L, grids, next_id, &v, err);
-    if (st == SQ_OK) st = smooth(&v, err);
+    /* the boundary layers keep their grading: no smoothing there */
+    int *keep = NULL;
+    if (st == SQ_OK && opt->nbl > 0) {
+        double T = 1.5 * bl_thickness(opt, opt->bl_layers);
+        keep = calloc((size_t)v.nv + 1, sizeof(int));
+        if (!keep) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        for (int i = 0; i < v.nv && st == SQ_OK; i++)
+            for (int b = 0; b < opt->nbl && st == SQ_OK && !keep[i]; b++) {
+                double d;
+                st = cad_face_edge_project(face, opt->bl_edges[b], &v.xy[2 * i], NULL, NULL, &d, err);
+                keep[i] = d < T;
+            }
+    }
+    if (st == SQ_OK) st = smooth(&v, keep, err);
+    free(keep);
     if (st == SQ_OK) st = raise_order(face, &v, Q, opt->nodes, out, err);
     vmesh_free(&v);
+    free(grade);
     for (int q = 0; grids && q < L->npatches; q++) patch_grid_free(&grids[q]);
     free(grids);
     edge_nodes_free(&en, L->nedges);

@@ -36,7 +36,8 @@ typedef struct {
 
 void sq_mesher_options_default(sq_mesher_options *opt);
 
-sq_status sq_mesh_layout(const cad_face *face, const sq_layout *L, const sq_mesher_options *opt,
-                         sq_quad_mesh **out, sq_error *err);
+/* info: the face (its vertices tell which edges a corner joins). */
+sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const sq_layout *L,
+                         const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err);
 
 #endif
