@@ -278,7 +278,7 @@ def main():
         s, t = sq["quadstats"], g["quadstats"]
         yn = lambda b: "yes" if b else "**no**"
         print("| %s | %s (%d vs %d) | %s (%.3f vs %.3f) | %s | %s |" % (
-            name, yn(s["interior_irregular"] < t["interior_irregular"]), s["interior_irregular"],
+            name, ("tie" if s["interior_irregular"] == t["interior_irregular"] else yn(s["interior_irregular"] < t["interior_irregular"])), s["interior_irregular"],
             t["interior_irregular"], yn(s["eta_min"] > t["eta_min"]), s["eta_min"], t["eta_min"],
             yn(sq["wall_s"] <= g["in_process_s"]), yn(sq["wall_s"] <= g["wall_s"])))
     print()

@@ -92,3 +92,27 @@ void sq_json_null(sq_json *j)
     item(j);
     fputs("null", j->fp);
 }
+
+void sq_json_key_number(sq_json *j, const char *key, double x)
+{
+    sq_json_key(j, key);
+    sq_json_number(j, x);
+}
+
+void sq_json_key_int(sq_json *j, const char *key, long x)
+{
+    sq_json_key(j, key);
+    sq_json_int(j, x);
+}
+
+void sq_json_key_string(sq_json *j, const char *key, const char *s)
+{
+    sq_json_key(j, key);
+    sq_json_string(j, s);
+}
+
+void sq_json_key_bool(sq_json *j, const char *key, int b)
+{
+    sq_json_key(j, key);
+    sq_json_bool(j, b);
+}

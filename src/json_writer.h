@@ -25,4 +25,10 @@ void sq_json_int(sq_json *j, long x);
 void sq_json_bool(sq_json *j, int b);
 void sq_json_null(sq_json *j);
 
+/* "key": value pairs in one call. */
+void sq_json_key_number(sq_json *j, const char *key, double x);
+void sq_json_key_int(sq_json *j, const char *key, long x);
+void sq_json_key_string(sq_json *j, const char *key, const char *s);
+void sq_json_key_bool(sq_json *j, const char *key, int b);
+
 #endif

@@ -56,3 +56,14 @@ void sq_svg_text(sq_svg *s, double x, double y, double dx_px, double dy_px, doub
     }
     fputs("</text>\n", s->fp);
 }
+
+const char *sq_svg_valence_color(int v)
+{
+    switch (v) {
+    case 3: return "#1f5fd6";
+    case 5: return "#d62020";
+    case 6: return "#f08c00";
+    case 8: return "#e6c700";
+    default: return "#555555";
+    }
+}

@@ -24,4 +24,8 @@ void sq_svg_circle(sq_svg *s, double x, double y, double r_px, const char *fill)
 void sq_svg_text(sq_svg *s, double x, double y, double dx_px, double dy_px, double size_px,
                  const char *fill, const char *text);
 
+/* Colour of a singular point of valence v in every picture: 3 blue, 5 red,
+ * 6 orange, 8 yellow, others grey. */
+const char *sq_svg_valence_color(int v);
+
 #endif

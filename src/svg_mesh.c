@@ -44,3 +44,49 @@ void sq_svg_mesh_edges(sq_svg *svg, const sem_tri_mesh *m, const sem_tri_lagrang
                                 bnd ? boundary_width : interior_width, "none");
             }
 }
+
+void sq_svg_mesh_isolines(sq_svg *svg, const sem_tri_mesh *m, const sem_tri_lagrange *lag, int S,
+                          sq_svg_scalar_fn f, void *ctx, double level0, double step, double tol,
+                          const unsigned char *skip, const char *color, double width)
+{
+    for (int e = 0; e < m->ntris; e++) {
+        if (skip && skip[e]) continue;
+        const double *g = &m->gxy[2 * (size_t)m->nodes_per_tri * e];
+        for (int j = 0; j < S; j++)
+            for (int i = 0; i + j < S; i++)
+                for (int up = 0; up < 2; up++) {
+                    if (up && i + j + 1 >= S) continue;
+                    /* the lattice cell's lower or upper sub-triangle */
+                    int ci[3][2] = {{i, j}, {i + 1, j}, {i, j + 1}};
+                    if (up) {
+                        ci[0][0] = i + 1, ci[0][1] = j + 1;
+                        ci[1][0] = i, ci[1][1] = j + 1;
+                        ci[2][0] = i + 1, ci[2][1] = j;
+                    }
+                    double rs[3][2], val[3], lo = HUGE_VAL, hi = -HUGE_VAL;
+                    for (int q = 0; q < 3; q++) {
+                        rs[q][0] = (double)ci[q][0] / S;
+                        rs[q][1] = (double)ci[q][1] / S;
+                        val[q] = f(ctx, e, rs[q][0], rs[q][1]);
+                        lo = fmin(lo, val[q]);
+                        hi = fmax(hi, val[q]);
+                    }
+                    double k0 = step > 0.0 ? ceil((lo - level0) / step) : 0.0;
+                    double k1 = step > 0.0 ? floor((hi - level0) / step) : 0.0;
+                    for (double k = k0; k <= k1; k += 1.0) {
+                        double lv = level0 + k * (step > 0.0 ? step : 0.0), pts[4];
+                        int np = 0;
+                        for (int q = 0; q < 3 && np < 2; q++) {
+                            int w = (q + 1) % 3;
+                            if ((val[q] < lv - tol) == (val[w] < lv - tol)) continue;
+                            double t = (lv - val[q]) / (val[w] - val[q]);
+                            sem_tri_geom_map(lag, g, rs[q][0] + t * (rs[w][0] - rs[q][0]),
+                                             rs[q][1] + t * (rs[w][1] - rs[q][1]), &pts[2 * np],
+                                             NULL);
+                            np++;
+                        }
+                        if (np == 2) sq_svg_polyline(svg, 2, pts, 0, color, width, "none");
+                    }
+                }
+    }
+}

@@ -15,4 +15,17 @@ void sq_svg_mesh_edges(sq_svg *svg, const sem_tri_mesh *m, const sem_tri_lagrang
                        int interior, const char *interior_color, double interior_width,
                        const char *boundary_color, double boundary_width);
 
+/* A scalar on element e at reference point (r, s). */
+typedef double (*sq_svg_scalar_fn)(void *ctx, int e, double r, double s);
+
+/* Isolines f = level0 + k*step (every integer k; step <= 0: the single
+ * level level0), as linear pieces on a lattice of order S in every element
+ * (skip[e] set: element left out; skip may be NULL), drawn through the
+ * curved geometry.  Values within tol of a level count as above it, so a
+ * function that is identically the level along an edge draws nothing
+ * there. */
+void sq_svg_mesh_isolines(sq_svg *svg, const sem_tri_mesh *m, const sem_tri_lagrange *lag, int S,
+                          sq_svg_scalar_fn f, void *ctx, double level0, double step, double tol,
+                          const unsigned char *skip, const char *color, double width);
+
 #endif

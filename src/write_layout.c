@@ -6,18 +6,6 @@
 #include <math.h>
 #include <stdlib.h>
 
-static void key_int(sq_json *j, const char *k, long v)
-{
-    sq_json_key(j, k);
-    sq_json_int(j, v);
-}
-
-static void key_num(sq_json *j, const char *k, double v)
-{
-    sq_json_key(j, k);
-    sq_json_number(j, v);
-}
-
 static const char *role_origin(const sq_layout *L, int k)
 {
     switch (L->role[k]) {
@@ -36,9 +24,9 @@ void sq_json_layout_keys(sq_json *j, const sq_layout_result *r)
     for (int k = 0; k < L->nsing; k++) {
         if (L->role[k] == SQ_LROLE_CROSSING) continue; /* regular valence-4 nodes */
         sq_json_begin_object(j);
-        key_num(j, "x", L->sing[k].x);
-        key_num(j, "y", L->sing[k].y);
-        key_int(j, "valence", L->sing[k].valence);
+        sq_json_key_number(j, "x", L->sing[k].x);
+        sq_json_key_number(j, "y", L->sing[k].y);
+        sq_json_key_int(j, "valence", L->sing[k].valence);
         sq_json_key(j, "origin");
         sq_json_string(j, role_origin(L, k));
         sq_json_end_object(j);
@@ -50,10 +38,10 @@ void sq_json_layout_keys(sq_json *j, const sq_layout_result *r)
     for (int k = 0; k < info->nvertices; k++) {
         if (info->vertices[k].smooth) continue;
         sq_json_begin_object(j);
-        key_num(j, "x", info->vertices[k].x);
-        key_num(j, "y", info->vertices[k].y);
-        key_num(j, "angle_deg", info->vertices[k].angle_deg);
-        key_int(j, "valence", r->vertex_quads[k]);
+        sq_json_key_number(j, "x", info->vertices[k].x);
+        sq_json_key_number(j, "y", info->vertices[k].y);
+        sq_json_key_number(j, "angle_deg", info->vertices[k].angle_deg);
+        sq_json_key_int(j, "valence", r->vertex_quads[k]);
         sq_json_end_object(j);
     }
     sq_json_end_array(j);
@@ -62,33 +50,33 @@ void sq_json_layout_keys(sq_json *j, const sq_layout_result *r)
     sq_json_begin_object(j);
     sq_json_key(j, "valid");
     sq_json_bool(j, r->valid);
-    key_int(j, "separatrices_traced", r->trace_stats.traced);
-    key_int(j, "merges", r->trace_stats.merges);
-    key_int(j, "separatrices", s->separatrices);
-    key_int(j, "patches", s->patches);
-    key_int(j, "quad_patches", s->quad_patches);
-    key_int(j, "t_junctions", s->t_junctions);
-    key_int(j, "limit_cycles_cut", s->limit_cycles_cut);
-    key_int(j, "triangles_repaired", s->triangles_repaired);
-    key_int(j, "annuli_cut", s->annuli_cut);
-    key_int(j, "duplicates_removed", s->duplicates_removed);
-    key_int(j, "crossings_split", s->crossings_split);
-    key_int(j, "iterations", s->iterations);
+    sq_json_key_int(j, "separatrices_traced", r->trace_stats.traced);
+    sq_json_key_int(j, "merges", r->trace_stats.merges);
+    sq_json_key_int(j, "separatrices", s->separatrices);
+    sq_json_key_int(j, "patches", s->patches);
+    sq_json_key_int(j, "quad_patches", s->quad_patches);
+    sq_json_key_int(j, "t_junctions", s->t_junctions);
+    sq_json_key_int(j, "limit_cycles_cut", s->limit_cycles_cut);
+    sq_json_key_int(j, "triangles_repaired", s->triangles_repaired);
+    sq_json_key_int(j, "annuli_cut", s->annuli_cut);
+    sq_json_key_int(j, "duplicates_removed", s->duplicates_removed);
+    sq_json_key_int(j, "crossings_split", s->crossings_split);
+    sq_json_key_int(j, "iterations", s->iterations);
     sq_json_end_object(j);
 }
 
 void sq_json_field_summary(sq_json *j, const sq_layout_result *r)
 {
-    key_int(j, "chi", r->info->chi);
+    sq_json_key_int(j, "chi", r->info->chi);
     sq_json_key(j, "field");
     sq_json_begin_object(j);
     sq_json_key(j, "kind");
     sq_json_string(j, r->field.kind);
     sq_json_key(j, "method");
     sq_json_string(j, r->field.method == SEM_CG ? "cg" : "dg");
-    key_int(j, "order", r->field.order);
-    key_int(j, "triangles", r->field.triangles);
-    if (r->field.dofs > 0) key_int(j, "dofs", r->field.dofs);
+    sq_json_key_int(j, "order", r->field.order);
+    sq_json_key_int(j, "triangles", r->field.triangles);
+    if (r->field.dofs > 0) sq_json_key_int(j, "dofs", r->field.dofs);
     sq_json_end_object(j);
 }
 
@@ -103,18 +91,18 @@ sq_status sq_write_layout_report(const char *path, const char *input, int face,
     sq_json_begin_object(&j);
     sq_json_key(&j, "input");
     sq_json_string(&j, input);
-    key_int(&j, "face", face);
+    sq_json_key_int(&j, "face", face);
     sq_json_field_summary(&j, r);
     sq_json_layout_keys(&j, r);
     sq_json_key(&j, "timings_s");
     sq_json_begin_object(&j);
-    key_num(&j, "read", t_read);
-    key_num(&j, "triangulate", r->field.t_triangulate);
-    key_num(&j, "solve", r->field.t_solve);
-    key_num(&j, "critical_points", r->field.t_critical);
-    key_num(&j, "trace", r->t_trace);
-    key_num(&j, "layout", r->t_layout);
-    if (t_split >= 0.0) key_num(&j, "split", t_split);
+    sq_json_key_number(&j, "read", t_read);
+    sq_json_key_number(&j, "triangulate", r->field.t_triangulate);
+    sq_json_key_number(&j, "solve", r->field.t_solve);
+    sq_json_key_number(&j, "critical_points", r->field.t_critical);
+    sq_json_key_number(&j, "trace", r->t_trace);
+    sq_json_key_number(&j, "layout", r->t_layout);
+    if (t_split >= 0.0) sq_json_key_number(&j, "split", t_split);
     sq_json_end_object(&j);
     sq_json_end_object(&j);
     return sq_outfile_commit(&f, err);
@@ -125,17 +113,6 @@ static void patch_colour(int p, char *buf, size_t n)
 {
     double h = fmod(p * 137.508, 360.0);
     snprintf(buf, n, "hsl(%.0f,60%%,82%%)", h);
-}
-
-static const char *valence_colour(int v)
-{
-    switch (v) {
-    case 3: return "#1f5fd6";
-    case 5: return "#d62020";
-    case 6: return "#f08c00";
-    case 8: return "#e6c700";
-    default: return "#555555";
-    }
 }
 
 /* The polygon of a patch's outer cycle: its edges' polylines in walking
@@ -187,7 +164,7 @@ sq_status sq_write_layout_svg(const char *path, const sq_layout_result *r, sq_er
             sq_svg_circle(&svg, s->x, s->y, 3.0, "#2b2b8f");
             continue;
         }
-        sq_svg_circle(&svg, s->x, s->y, 6.5, valence_colour(s->valence));
+        sq_svg_circle(&svg, s->x, s->y, 6.5, sq_svg_valence_color(s->valence));
         if (L->role[k] == SQ_LROLE_MIDPOINT) /* a repair: labelled */
             sq_svg_text(&svg, s->x, s->y, 8.0, 14.0, 12.0, "#b00000", "midpoint");
         else if (L->role[k] == SQ_LROLE_TJUNCTION)
