@@ -38,8 +38,8 @@ sq_status sq_cli_int_list(const char *opt, const char *val, int lo, int hi, int 
     for (const char *p = val; *p;) {
         size_t len = strcspn(p, ",");
         if (len == 0 || len >= sizeof buf || *n == max)
-            return SQ_FAIL(err, SQ_ERR_USAGE, "%s expects up to %d comma-separated integers, got '%s'",
-                           opt, max, val);
+            return SQ_FAIL(err, SQ_ERR_USAGE,
+                           "%s expects up to %d comma-separated integers, got '%s'", opt, max, val);
         memcpy(buf, p, len);
         buf[len] = '\0';
         SQ_TRY(sq_cli_int(opt, buf, lo, hi, &out[(*n)++], err));
@@ -51,10 +51,14 @@ sq_status sq_cli_int_list(const char *opt, const char *val, int lo, int hi, int 
 
 sq_status sq_cli_method(const char *val, sq_method *out, sq_error *err)
 {
-    if (!strcmp(val, "auto")) *out = SQ_METHOD_AUTO;
-    else if (!strcmp(val, "cg")) *out = SQ_METHOD_CG;
-    else if (!strcmp(val, "dg")) *out = SQ_METHOD_DG;
-    else return SQ_FAIL(err, SQ_ERR_USAGE, "--method expects auto, cg or dg, got '%s'", val);
+    if (!strcmp(val, "auto"))
+        *out = SQ_METHOD_AUTO;
+    else if (!strcmp(val, "cg"))
+        *out = SQ_METHOD_CG;
+    else if (!strcmp(val, "dg"))
+        *out = SQ_METHOD_DG;
+    else
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--method expects auto, cg or dg, got '%s'", val);
     return SQ_OK;
 }
 
@@ -63,6 +67,48 @@ sq_status sq_cli_value(int argc, char **argv, int *i, const char **val, sq_error
     if (*i + 1 >= argc) return SQ_FAIL(err, SQ_ERR_USAGE, "option %s needs a value", argv[*i]);
     *val = argv[++*i];
     return SQ_OK;
+}
+
+void sq_cli_args_init(sq_cli_args *a)
+{
+    memset(a, 0, sizeof *a);
+    a->face = -1;
+}
+
+sq_status sq_cli_take(const char *cmd, int argc, char **argv, int *i, sq_cli_args *a, int *taken,
+                      sq_error *err)
+{
+    const char *o = argv[*i], *val;
+    *taken = 1;
+    if (!strcmp(o, "--face")) {
+        SQ_TRY(sq_cli_value(argc, argv, i, &val, err));
+        return sq_cli_int(o, val, 0, 1000000, &a->face, err);
+    }
+    if (!strcmp(o, "-o") || !strcmp(o, "--output"))
+        return sq_cli_value(argc, argv, i, &a->output, err);
+    if (!strcmp(o, "--svg")) return sq_cli_value(argc, argv, i, &a->svg, err);
+    if (!strcmp(o, "--report")) return sq_cli_value(argc, argv, i, &a->report, err);
+    if (!strcmp(o, "-q") || !strcmp(o, "--quiet")) {
+        a->quiet = 1;
+        return SQ_OK;
+    }
+    if (o[0] != '-' || !o[1]) {
+        if (a->input) return SQ_FAIL(err, SQ_ERR_USAGE, "%s: one input file expected", cmd);
+        a->input = o;
+        return SQ_OK;
+    }
+    *taken = 0;
+    return SQ_OK;
+}
+
+sq_status sq_cli_unknown(const char *cmd, const char *opt, sq_error *err)
+{
+    return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown option %s (try: semquad help)", cmd, opt);
+}
+
+sq_status sq_cli_need_input(const char *cmd, const sq_cli_args *a, sq_error *err)
+{
+    return a->input ? SQ_OK : SQ_FAIL(err, SQ_ERR_USAGE, "%s: missing input file", cmd);
 }
 
 sq_status sq_cli_open_face(const char *path, int face, cad_model **model, cad_face **cface,

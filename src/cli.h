@@ -21,6 +21,29 @@ sq_status sq_cli_method(const char *val, sq_method *out, sq_error *err);
 /* Value of option argv[*i] (advances *i); SQ_ERR_USAGE if missing. */
 sq_status sq_cli_value(int argc, char **argv, int *i, const char **val, sq_error *err);
 
+/* What every command that reads a face shares on its command line. */
+typedef struct {
+    const char *input;  /* the CAD file (the one positional argument) */
+    int face;           /* --face N (-1: the default face) */
+    int quiet;          /* -q, --quiet */
+    const char *output; /* -o F, --output F */
+    const char *svg;    /* --svg F */
+    const char *report; /* --report F */
+} sq_cli_args;
+
+void sq_cli_args_init(sq_cli_args *a);
+
+/* If argv[*i] is a shared option (advancing *i past its value) or the
+ * input file, take it and set *taken; otherwise leave it for the command.
+ * A second input file is a usage error naming cmd. */
+sq_status sq_cli_take(const char *cmd, int argc, char **argv, int *i, sq_cli_args *a, int *taken,
+                      sq_error *err);
+
+/* The usage error for an option no one took; and the one for a missing
+ * input file. */
+sq_status sq_cli_unknown(const char *cmd, const char *opt, sq_error *err);
+sq_status sq_cli_need_input(const char *cmd, const sq_cli_args *a, sq_error *err);
+
 /* Read `path` and open face `face` (-1: the default face; *note set when
  * the choice needs saying).  On success the caller frees both. */
 sq_status sq_cli_open_face(const char *path, int face, cad_model **model, cad_face **cface,

@@ -55,8 +55,9 @@ static sq_status field_htheta(const char *path, int face, const cad_face *f,
             const sq_htheta_loop *L = &ht.loops[l];
             printf("  loop %d (%s): misalignment %.6f deg", l, l ? "hole" : "outer",
                    L->misalignment * 180.0 / M_PI);
-            if (l) printf(", jump %.9f (expected %.9f, turning %.9f)", L->jump, L->expected_jump,
-                          L->turning);
+            if (l)
+                printf(", jump %.9f (expected %.9f, turning %.9f)", L->jump, L->expected_jump,
+                       L->turning);
             printf(": %s\n", L->aligned ? "aligned" : "MISALIGNED");
         }
     }
@@ -72,16 +73,18 @@ static sq_status field_htheta(const char *path, int face, const cad_face *f,
 
 sq_status sq_cmd_field(int argc, char **argv, sq_error *err)
 {
-    const char *path = NULL, *vtu = NULL, *svg = NULL, *report = NULL, *val, *sing = NULL;
-    int face = -1, quiet = 0, tri_order = 0, allow_misaligned = 0;
+    const char *val, *sing = NULL;
+    int tri_order = 0, allow_misaligned = 0;
     sq_field_options opt;
     sq_field_options_default(&opt);
+    sq_cli_args args;
+    sq_cli_args_init(&args);
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
-        if (!strcmp(a, "--face")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            SQ_TRY(sq_cli_int(a, val, 0, 1000000, &face, err));
-        } else if (!strcmp(a, "--order")) {
+        int taken;
+        SQ_TRY(sq_cli_take("field", argc, argv, &i, &args, &taken, err));
+        if (taken) continue;
+        if (!strcmp(a, "--order")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_int(a, val, 1, 16, &opt.order, err));
         } else if (!strcmp(a, "--geom-order")) {
@@ -93,27 +96,19 @@ sq_status sq_cmd_field(int argc, char **argv, sq_error *err)
         } else if (!strcmp(a, "--size")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_double(a, val, 1e-300, 1e300, &opt.tri.size, err));
-        } else if (!strcmp(a, "--vtu") || !strcmp(a, "-o")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &vtu, err));
-        } else if (!strcmp(a, "--svg")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &svg, err));
-        } else if (!strcmp(a, "--report")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &report, err));
+        } else if (!strcmp(a, "--vtu")) { /* alias of -o */
+            SQ_TRY(sq_cli_value(argc, argv, &i, &args.output, err));
         } else if (!strcmp(a, "--singularities")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &sing, err));
+        } else if (!strcmp(a, "--no-grading")) {
+            opt.grading = 0.0; /* uniform triangulation near singular vertices */
         } else if (!strcmp(a, "--allow-misaligned")) {
             allow_misaligned = 1;
-        } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
-            quiet = 1;
-        } else if (a[0] == '-' && a[1]) {
-            return SQ_FAIL(err, SQ_ERR_USAGE, "field: unknown option %s", a);
-        } else if (!path) {
-            path = a;
         } else {
-            return SQ_FAIL(err, SQ_ERR_USAGE, "field: one input file expected");
+            return sq_cli_unknown("field", a, err);
         }
     }
-    if (!path) return SQ_FAIL(err, SQ_ERR_USAGE, "field: missing input file");
+    SQ_TRY(sq_cli_need_input("field", &args, err));
     /* isoparametric unless told otherwise (the triangulation stops at 12) */
     opt.tri.order = tri_order ? tri_order : (opt.order < 12 ? opt.order : 12);
 
@@ -121,25 +116,26 @@ sq_status sq_cmd_field(int argc, char **argv, sq_error *err)
     cad_model *m = NULL;
     cad_face *f = NULL;
     const char *note;
-    SQ_TRY(sq_cli_open_face(path, face, &m, &f, &face, &note, err));
+    SQ_TRY(sq_cli_open_face(args.input, args.face, &m, &f, &args.face, &note, err));
     double t_read = sq_now() - t0;
-    if (note && !quiet) fprintf(stderr, "semquad: note: %s\n", note);
+    if (note && !args.quiet) fprintf(stderr, "semquad: note: %s\n", note);
     if (sing) {
-        sq_status hs = field_htheta(path, face, f, &opt, sing, allow_misaligned, vtu, svg, report,
-                                    quiet, t_read, err);
+        sq_status hs = field_htheta(args.input, args.face, f, &opt, sing, allow_misaligned,
+                                    args.output, args.svg, args.report, args.quiet, t_read, err);
         cad_face_free(&f);
         cad_model_free(&m);
         return hs;
     }
     sq_field_analysis an;
     sq_status st = sq_field_analyse(f, &opt, &an, err);
-    if (st == SQ_OK && vtu) st = sq_write_field_vtu(vtu, &an, err);
-    if (st == SQ_OK && svg) st = sq_write_field_svg(svg, &an, err);
-    if (st == SQ_OK && report) st = sq_write_field_report(report, path, face, &an, t_read, err);
-    if (st == SQ_OK && !quiet) {
-        printf("%s face %d: guiding field %s P=%d on %d triangles (%ld dofs per component)\n", path,
-               face, an.field.method == SEM_CG ? "CG" : "DG", an.field.order, an.tri.mesh->ntris,
-               an.field.ndofs);
+    if (st == SQ_OK && args.output) st = sq_write_field_vtu(args.output, &an, err);
+    if (st == SQ_OK && args.svg) st = sq_write_field_svg(args.svg, &an, err);
+    if (st == SQ_OK && args.report)
+        st = sq_write_field_report(args.report, args.input, args.face, &an, t_read, err);
+    if (st == SQ_OK && !args.quiet) {
+        printf("%s face %d: guiding field %s P=%d on %d triangles (%ld dofs per component)\n",
+               args.input, args.face, an.field.method == SEM_CG ? "CG" : "DG", an.field.order,
+               an.tri.mesh->ntris, an.field.ndofs);
         printf("  %d singular point%s\n", an.npoints, an.npoints == 1 ? "" : "s");
         for (int k = 0; k < an.npoints; k++)
             printf("    (%.9f, %.9f) valence %d%s\n", an.points[k].x, an.points[k].y,
@@ -148,14 +144,16 @@ sq_status sq_cmd_field(int argc, char **argv, sq_error *err)
         for (int k = 0; k < an.info.nvertices; k++)
             if (!an.info.vertices[k].smooth)
                 printf("    (%.6g, %.6g) %.2f deg: %d quad%s\n", an.info.vertices[k].x,
-                       an.info.vertices[k].y, an.info.vertices[k].angle_deg,
-                       an.corners[k].valence, an.corners[k].valence == 1 ? "" : "s");
+                       an.info.vertices[k].y, an.info.vertices[k].angle_deg, an.corners[k].valence,
+                       an.corners[k].valence == 1 ? "" : "s");
         printf("  Poincare-Hopf: sum(4 - V) + sum(2 - n) = %d, 4 chi = %d: %s\n", an.ph_lhs,
                an.ph_rhs, an.ph_lhs == an.ph_rhs ? "holds" : "VIOLATED");
     }
-    if (st == SQ_OK && an.ph_lhs != an.ph_rhs && !quiet)
-        fprintf(stderr, "semquad: warning: Poincare-Hopf check fails (%d != %d): a singular point "
-                        "was missed or misclassified\n", an.ph_lhs, an.ph_rhs);
+    if (st == SQ_OK && an.ph_lhs != an.ph_rhs && !args.quiet)
+        fprintf(stderr,
+                "semquad: warning: Poincare-Hopf check fails (%d != %d): a singular point "
+                "was missed or misclassified\n",
+                an.ph_lhs, an.ph_rhs);
     sq_field_analysis_free(&an);
     cad_face_free(&f);
     cad_model_free(&m);

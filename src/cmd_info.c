@@ -70,7 +70,8 @@ static void print_json(const char *path, const cad_model *m, const face_entry *f
             sq_json_number(&j, in->area);
             sq_json_key(&j, "bbox");
             sq_json_begin_array(&j);
-            for (int c = 0; c < 4; c++) sq_json_number(&j, in->bbox[c]);
+            for (int c = 0; c < 4; c++)
+                sq_json_number(&j, in->bbox[c]);
             sq_json_end_array(&j);
             sq_json_key(&j, "loops");
             sq_json_begin_array(&j);
@@ -125,14 +126,17 @@ sq_status sq_cmd_info(int argc, char **argv, sq_error *err)
     const char *path = NULL, *val;
     int face = -1, json = 0;
     for (int i = 0; i < argc; i++) {
-        if (!strcmp(argv[i], "--json")) json = 1;
+        if (!strcmp(argv[i], "--json"))
+            json = 1;
         else if (!strcmp(argv[i], "--face")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_int("--face", val, 0, 1000000, &face, err));
         } else if (argv[i][0] == '-' && argv[i][1]) {
             return SQ_FAIL(err, SQ_ERR_USAGE, "info: unknown option %s", argv[i]);
-        } else if (!path) path = argv[i];
-        else return SQ_FAIL(err, SQ_ERR_USAGE, "info: one input file expected");
+        } else if (!path)
+            path = argv[i];
+        else
+            return SQ_FAIL(err, SQ_ERR_USAGE, "info: one input file expected");
     }
     if (!path) return SQ_FAIL(err, SQ_ERR_USAGE, "info: missing input file");
     cad_model *m = NULL;
@@ -154,9 +158,12 @@ sq_status sq_cmd_info(int argc, char **argv, sq_error *err)
         if (st == SQ_OK) st = sq_face_info_compute(f[k].face, &f[k].info, err);
     }
     if (st == SQ_OK) {
-        if (json) print_json(path, m, f, nf);
-        else print_text(path, m, f, nf);
-        if (fflush(stdout) != 0) st = SQ_FAIL(err, SQ_ERR_OUTPUT, "cannot write to standard output");
+        if (json)
+            print_json(path, m, f, nf);
+        else
+            print_text(path, m, f, nf);
+        if (fflush(stdout) != 0)
+            st = SQ_FAIL(err, SQ_ERR_OUTPUT, "cannot write to standard output");
     }
     for (int k = 0; f && k < nf; k++) {
         sq_face_info_free(&f[k].info);

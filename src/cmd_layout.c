@@ -9,16 +9,17 @@
 
 sq_status sq_cmd_layout(int argc, char **argv, sq_error *err)
 {
-    const char *path = NULL, *step = NULL, *svg = NULL, *report = NULL, *val;
-    int face = -1, quiet = 0;
+    const char *val;
     sq_layout_options opt;
     sq_layout_options_default(&opt);
+    sq_cli_args args;
+    sq_cli_args_init(&args);
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
-        if (!strcmp(a, "--face")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            SQ_TRY(sq_cli_int(a, val, 0, 1000000, &face, err));
-        } else if (!strcmp(a, "--order")) {
+        int taken;
+        SQ_TRY(sq_cli_take("layout", argc, argv, &i, &args, &taken, err));
+        if (taken) continue;
+        if (!strcmp(a, "--order")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_int(a, val, 1, 16, &opt.field.order, err));
         } else if (!strcmp(a, "--method")) {
@@ -34,52 +35,41 @@ sq_status sq_cmd_layout(int argc, char **argv, sq_error *err)
         } else if (!strcmp(a, "--merge-distance")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_double(a, val, 0.1, 1000.0, &opt.trace.merge_distance, err));
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--step")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &step, err));
-        } else if (!strcmp(a, "--svg")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &svg, err));
-        } else if (!strcmp(a, "--report")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &report, err));
-        } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
-            quiet = 1;
-        } else if (a[0] == '-' && a[1]) {
-            return SQ_FAIL(err, SQ_ERR_USAGE, "layout: unknown option %s", a);
-        } else if (!path) {
-            path = a;
         } else {
-            return SQ_FAIL(err, SQ_ERR_USAGE, "layout: one input file expected");
+            return sq_cli_unknown("layout", a, err);
         }
     }
-    if (!path) return SQ_FAIL(err, SQ_ERR_USAGE, "layout: missing input file");
+    SQ_TRY(sq_cli_need_input("layout", &args, err));
     opt.field.tri.order = opt.field.order < 12 ? opt.field.order : 12;
 
     double t0 = sq_now();
     cad_model *m = NULL;
     cad_face *f = NULL;
     const char *note;
-    SQ_TRY(sq_cli_open_face(path, face, &m, &f, &face, &note, err));
+    SQ_TRY(sq_cli_open_face(args.input, args.face, &m, &f, &args.face, &note, err));
     double t_read = sq_now() - t0, t_split = -1.0;
-    if (note && !quiet) fprintf(stderr, "semquad: note: %s\n", note);
+    if (note && !args.quiet) fprintf(stderr, "semquad: note: %s\n", note);
     sq_layout_result r;
     sq_status st = sq_layout_run(f, &opt, &r, err);
     /* an invalid layout is still drawn and reported, so it can be looked at */
     sq_status out = SQ_OK;
-    if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && svg) out = sq_write_layout_svg(svg, &r, err);
-    if (st == SQ_OK && out == SQ_OK && step) {
+    if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && args.svg)
+        out = sq_write_layout_svg(args.svg, &r, err);
+    if (st == SQ_OK && out == SQ_OK && args.output) {
         double t1 = sq_now();
-        out = sq_write_layout_step(step, m, face, f, &r.layout, NULL, err);
+        out = sq_write_layout_step(args.output, m, args.face, f, &r.layout, NULL, err);
         t_split = sq_now() - t1;
     }
-    if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && out == SQ_OK && report)
-        out = sq_write_layout_report(report, path, face, &r, t_read, t_split, err);
-    if (st == SQ_OK && out == SQ_OK && !quiet) {
+    if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && out == SQ_OK && args.report)
+        out = sq_write_layout_report(args.report, args.input, args.face, &r, t_read, t_split, err);
+    if (st == SQ_OK && out == SQ_OK && !args.quiet) {
         const sq_layout_stats *s = &r.layout.stats;
         printf("%s face %d: %d singular points, %d separatrices, %d quad patches; repairs: %d "
                "limit cycles, %d T-junctions, %d triangles, %d annuli, %d duplicates, %d "
                "crossings\n",
-               path, face, r.nsing, s->separatrices, s->quad_patches, s->limit_cycles_cut,
-               s->t_junctions, s->triangles_repaired, s->annuli_cut, s->duplicates_removed,
-               s->crossings_split);
+               args.input, args.face, r.nsing, s->separatrices, s->quad_patches,
+               s->limit_cycles_cut, s->t_junctions, s->triangles_repaired, s->annuli_cut,
+               s->duplicates_removed, s->crossings_split);
     }
     if (st == SQ_OK) st = out;
     if (st == SQ_OK || st == SQ_ERR_LAYOUT) sq_layout_result_free(&r);

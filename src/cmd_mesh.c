@@ -37,18 +37,20 @@ static void progress(int quiet, const char *fmt, const char *a, double t)
 
 sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
 {
-    const char *path = NULL, *outp = NULL, *svg = NULL, *report = NULL, *val;
-    int face = -1, quiet = 0, bl[64];
+    const char *val;
+    int bl[64];
     sq_layout_options lo;
     sq_layout_options_default(&lo);
     sq_mesher_options mo;
     sq_mesher_options_default(&mo);
+    sq_cli_args args;
+    sq_cli_args_init(&args);
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
-        if (!strcmp(a, "--face")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            SQ_TRY(sq_cli_int(a, val, 0, 1000000, &face, err));
-        } else if (!strcmp(a, "--order")) {
+        int taken;
+        SQ_TRY(sq_cli_take("mesh", argc, argv, &i, &args, &taken, err));
+        if (taken) continue;
+        if (!strcmp(a, "--order")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_int(a, val, 1, 10, &mo.order, err));
         } else if (!strcmp(a, "--size")) {
@@ -69,7 +71,8 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
             SQ_TRY(sq_cli_double(a, val, 0.1, 1000.0, &lo.trace.merge_distance, err));
         } else if (!strcmp(a, "--bl")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            SQ_TRY(sq_cli_int_list(a, val, 0, 1000000, bl, (int)(sizeof bl / sizeof *bl), &mo.nbl, err));
+            SQ_TRY(sq_cli_int_list(a, val, 0, 1000000, bl, (int)(sizeof bl / sizeof *bl), &mo.nbl,
+                                   err));
             mo.bl_edges = bl;
         } else if (!strcmp(a, "--bl-first")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
@@ -82,30 +85,24 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
             SQ_TRY(sq_cli_int(a, val, 1, 1000, &mo.bl_layers, err));
         } else if (!strcmp(a, "--nodes")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            if (!strcmp(val, "gll")) mo.nodes = SQ_NODES_GLL;
-            else if (!strcmp(val, "equispaced")) mo.nodes = SQ_NODES_EQUISPACED;
-            else return SQ_FAIL(err, SQ_ERR_USAGE, "--nodes expects gll or equispaced, got '%s'", val);
-        } else if (!strcmp(a, "-o") || !strcmp(a, "--output")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &outp, err));
-        } else if (!strcmp(a, "--svg")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &svg, err));
-        } else if (!strcmp(a, "--report")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &report, err));
-        } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
-            quiet = 1;
-        } else if (a[0] == '-' && a[1]) {
-            return SQ_FAIL(err, SQ_ERR_USAGE, "mesh: unknown option %s", a);
-        } else if (!path) {
-            path = a;
+            if (!strcmp(val, "gll"))
+                mo.nodes = SQ_NODES_GLL;
+            else if (!strcmp(val, "equispaced"))
+                mo.nodes = SQ_NODES_EQUISPACED;
+            else
+                return SQ_FAIL(err, SQ_ERR_USAGE, "--nodes expects gll or equispaced, got '%s'",
+                               val);
         } else {
-            return SQ_FAIL(err, SQ_ERR_USAGE, "mesh: one input file expected");
+            return sq_cli_unknown("mesh", a, err);
         }
     }
-    if (!path) return SQ_FAIL(err, SQ_ERR_USAGE, "mesh: missing input file");
+    SQ_TRY(sq_cli_need_input("mesh", &args, err));
     if (mo.nbl > 0 && (!(mo.bl_first > 0.0) || mo.bl_layers < 1))
         return SQ_FAIL(err, SQ_ERR_USAGE, "--bl needs --bl-first d > 0 and --bl-layers n >= 1");
-    if (outp && !ends_with(outp, ".msh") && !ends_with(outp, ".xml") && !ends_with(outp, ".vtu"))
-        return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)", outp);
+    if (args.output && !ends_with(args.output, ".msh") && !ends_with(args.output, ".xml") &&
+        !ends_with(args.output, ".vtu"))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)",
+                       args.output);
     lo.field.tri.order = lo.field.order < 12 ? lo.field.order : 12;
 
     sq_mesh_timings t = {0};
@@ -113,10 +110,10 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
     cad_model *model = NULL;
     cad_face *f = NULL;
     const char *note;
-    SQ_TRY(sq_cli_open_face(path, face, &model, &f, &face, &note, err));
+    SQ_TRY(sq_cli_open_face(args.input, args.face, &model, &f, &args.face, &note, err));
     t.read = sq_now() - t0;
-    if (note && !quiet) fprintf(stderr, "semquad: note: %s\n", note);
-    progress(quiet, "semquad: read %s", path, t.read);
+    if (note && !args.quiet) fprintf(stderr, "semquad: note: %s\n", note);
+    progress(args.quiet, "semquad: read %s", args.input, t.read);
     sq_layout_result r;
     sq_status st = sq_layout_run(f, &lo, &r, err);
     if (st == SQ_OK) {
@@ -125,11 +122,12 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
         t.critical_points = r.field.t_critical;
         t.trace = r.t_trace;
         t.layout = r.t_layout;
-        if (!quiet) {
+        if (!args.quiet) {
             fprintf(stderr, "semquad: %s field %s P=%d on %d triangles (%.3f s)\n", r.field.kind,
                     r.field.method == SEM_CG ? "CG" : "DG", r.field.order, r.field.triangles,
                     t.triangulate + t.solve);
-            fprintf(stderr, "semquad: %d singular points, %d separatrices, %d quad patches (%.3f s)\n",
+            fprintf(stderr,
+                    "semquad: %d singular points, %d separatrices, %d quad patches (%.3f s)\n",
                     r.nsing, r.layout.stats.separatrices, r.layout.stats.quad_patches,
                     t.critical_points + t.trace + t.layout);
         }
@@ -144,18 +142,20 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
         if (st == SQ_OK && q.inverted > 0)
             st = SQ_FAIL(err, SQ_ERR_LAYOUT,
                          "%d quads have a non-positive Jacobian (min scaled Jacobian %.3g); try a "
-                         "smaller --size", q.inverted, q.min_scaled_jacobian);
+                         "smaller --size",
+                         q.inverted, q.min_scaled_jacobian);
     }
     if (st == SQ_OK) {
         char line[256];
         sq_quad_quality_line(m, &q, line, sizeof line);
-        if (!quiet) fprintf(stderr, "semquad: meshed (%.3f s)\n", t.mesh);
+        if (!args.quiet) fprintf(stderr, "semquad: meshed (%.3f s)\n", t.mesh);
         double t2 = sq_now();
-        if (outp) st = write_mesh(outp, m, err);
-        if (st == SQ_OK && svg) st = sq_write_quad_svg(svg, m, err);
+        if (args.output) st = write_mesh(args.output, m, err);
+        if (st == SQ_OK && args.svg) st = sq_write_quad_svg(args.svg, m, err);
         t.write = sq_now() - t2;
-        if (st == SQ_OK && report) st = sq_write_mesh_report(report, path, face, &r, m, &q, &t, err);
-        if (st == SQ_OK && !quiet) printf("%s\n", line);
+        if (st == SQ_OK && args.report)
+            st = sq_write_mesh_report(args.report, args.input, args.face, &r, m, &q, &t, err);
+        if (st == SQ_OK && !args.quiet) printf("%s\n", line);
     }
     sq_quad_mesh_free(&m);
     sq_layout_result_free(&r);

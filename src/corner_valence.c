@@ -21,7 +21,8 @@ static double arc_radius(const sq_guiding_field *g, const cad_face *face, const 
         double d = hypot(m->vxy[2 * k] - v->x, m->vxy[2 * k + 1] - v->y);
         if (d > 0.0 && d < h) h = d;
     }
-    double L = fmin(cad_face_edge_length(face, v->edge_in), cad_face_edge_length(face, v->edge_out));
+    double L =
+        fmin(cad_face_edge_length(face, v->edge_in), cad_face_edge_length(face, v->edge_out));
     return fmin(0.2 * h, 0.1 * L);
 }
 
@@ -40,7 +41,8 @@ static sq_status one_corner(const sq_guiding_field *g, const cad_face *face, con
     int elem = -1;
     for (int k = 1; k < ARC_SAMPLES; k++) {
         double a = a0 + sweep * k / ARC_SAMPLES, x[2] = {c[0] + rho * cos(a), c[1] + rho * sin(a)};
-        if (sq_guiding_field_eval(g, x, &elem, cur, NULL)) continue; /* outside near a curved edge */
+        if (sq_guiding_field_eval(g, x, &elem, cur, NULL))
+            continue; /* outside near a curved edge */
         total += turn(prev, cur);
         memcpy(prev, cur, sizeof prev);
     }
