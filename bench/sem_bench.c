@@ -240,6 +240,16 @@ int main(int argc, char **argv)
            "fresh process holding the mesh during assembly, factorization and solve (VmHWM); "
            "*+MB*: the part above the resident size before it started.\n\n",
            getenv("OPENBLAS_NUM_THREADS"), base);
+    char la[64] = "?";
+    FILE *lf = fopen("/proc/loadavg", "r");
+    if (lf) {
+        if (!fgets(la, sizeof la, lf)) strcpy(la, "?");
+        fclose(lf);
+        la[strcspn(la, "\n")] = 0;
+    }
+    printf("Conditions: %ld cores online, /proc/loadavg at the start: %s (other work on a "
+           "shared machine inflates the times; rerun for a quiet figure).\n\n",
+           sysconf(_SC_NPROCESSORS_ONLN), la);
     printf("| P | method | triangles | dofs | assemble+factor s | solve s | total s | peak MB | +MB |\n");
     printf("| ---: | --- | ---: | ---: | ---: | ---: | ---: | ---: | ---: |\n");
     fflush(stdout);

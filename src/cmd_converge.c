@@ -149,6 +149,7 @@ sq_status sq_cmd_converge(int argc, char **argv, sq_error *err)
         snprintf(title, sizeof title, "%s, u = %s: %s-refinement", base ? base + 1 : path,
                  opt.solution, r.nsizes > 1 ? "h" : "p");
         st = sq_converge_write_svg(svg, &r, title, err);
+        if (st != SQ_OK && csv) remove(csv); /* all outputs or none */
     }
     if (st == SQ_OK && !quiet) print_table(path, face, opt.solution, &r);
     sq_converge_result_free(&r);

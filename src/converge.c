@@ -231,7 +231,7 @@ sq_status sq_converge_write_svg(const char *path, const sq_converge_result *r, c
         free(s), free(xy), free(labels), free(idx);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
-    int ns = 0, used = 0, ncolor = 0;
+    int ns = 0, used = 0;
     const int group = href ? r->nsizes : r->nruns; /* runs are sorted: method, P, size */
     for (int k0 = 0; k0 < r->nruns;) {
         /* a p-series is all runs of one method at size 0; an h-series is
@@ -246,9 +246,9 @@ sq_status sq_converge_write_svg(const char *path, const sq_converge_result *r, c
             k0 = k;
         }
         const sq_converge_run *a = &r->runs[idx[0]];
-        const char *color = href ? sq_plot_color(ncolor % 8)
+        /* h-refinement: one colour per P, the marker tells the method */
+        const char *color = href ? sq_plot_color(a->P - r->runs[0].P)
                                  : sq_plot_color(a->method == SEM_CG ? 0 : 1);
-        ncolor++;
         for (int norm = 0; norm < 2; norm++) {
             double *x = xy + used, *y = xy + used + n;
             used += 2 * n;
