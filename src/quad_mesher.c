@@ -480,12 +480,117 @@ static sq_status arc_on_edge(const cad_face *face, int c, const double x[2], dou
     return SQ_OK;
 }
 
+/* The other quad on side (a, b) of quad q, or -1; *k its local side. */
+static int across(const vmesh *v, const int *vstart, const int *vquads, int q, int a, int b, int *k)
+{
+    for (int t = vstart[a]; t < vstart[a + 1]; t++) {
+        int p = vquads[t];
+        if (p == q) continue;
+        for (int l = 0; l < 4; l++)
+            if (v->quad[4 * p + l] == b && v->quad[4 * p + (l + 1) % 4] == a) {
+                *k = l;
+                return p;
+            }
+    }
+    return -1;
+}
+
+/* Boundary layers, exactly: from every vertex of a wall (a boundary-layer
+ * CAD edge), march outwards through the quads' columns and put the vertex
+ * of layer j at bl_thickness(j) along the wall's normal — the graded edges
+ * only approximate that between them.  The march stops where the graded
+ * mesh had no more layers (a vertex further than 1.25 times the asked
+ * thickness). */
+static sq_status bl_march(const cad_face *face, const sq_mesher_options *o, vmesh *v, sq_error *err)
+{
+    int *vstart = calloc((size_t)v->nv + 1, sizeof(int)), *vquads = malloc(sizeof(int) * 4 * (size_t)v->nq);
+    int *fill = calloc((size_t)v->nv + 1, sizeof(int));
+    double *orig = malloc(sizeof(double) * 2 * (size_t)v->nv + 1);
+    sq_status st = vstart && vquads && fill && orig ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) {
+        memcpy(orig, v->xy, sizeof(double) * 2 * (size_t)v->nv);
+        for (int t = 0; t < 4 * v->nq; t++) vstart[v->quad[t] + 1]++;
+        for (int i = 0; i < v->nv; i++) vstart[i + 1] += vstart[i];
+        for (int q = 0; q < v->nq; q++)
+            for (int l = 0; l < 4; l++) {
+                int a = v->quad[4 * q + l];
+                vquads[vstart[a] + fill[a]++] = q;
+            }
+    }
+    double limit = 1.25 * bl_thickness(o, o->bl_layers);
+    for (int q0 = 0; q0 < v->nq && st == SQ_OK; q0++)
+        for (int k0 = 0; k0 < 4 && st == SQ_OK; k0++) {
+            int tag = v->side_tag[4 * q0 + k0], is = 0;
+            for (int b = 0; b < o->nbl; b++) is |= tag == o->bl_edges[b];
+            if (!is) continue;
+            for (int end = 0; end < 2 && st == SQ_OK; end++) {
+                /* the column from wall vertex w: through q0, then across */
+                int q = q0, k = k0, w = v->quad[4 * q0 + (k0 + end) % 4];
+                double s, X[2], tg[2];
+                st = cad_face_edge_project(face, tag, &v->xy[2 * w], &s, NULL, NULL, err);
+                if (st == SQ_OK) st = cad_face_edge_eval(face, tag, s, X, tg, NULL, err);
+                for (int j = 1; j <= o->bl_layers && q >= 0 && st == SQ_OK; j++) {
+                    /* in quad q with wall-side k, the vertex above the column */
+                    int up = v->quad[4 * q + (end ? (k + 2) % 4 : (k + 3) % 4)];
+                    double dist, dx = orig[2 * up] - X[0], dy = orig[2 * up + 1] - X[1];
+                    st = cad_face_edge_project(face, tag, &orig[2 * up], NULL, NULL, &dist, err);
+                    if (st != SQ_OK || dist > limit) break;
+                    /* a column that leaves the wall obliquely (a fan at a
+                     * corner of the wall) keeps its graded vertices */
+                    if (-dx * tg[1] + dy * tg[0] < 0.5 * hypot(dx, dy)) break;
+                    double h = bl_thickness(o, j);
+                    /* the face is on the left of the wall's direction */
+                    v->xy[2 * up] = X[0] - h * tg[1];
+                    v->xy[2 * up + 1] = X[1] + h * tg[0];
+                    /* next quad outwards: across the side opposite the wall side */
+                    int a = v->quad[4 * q + (k + 2) % 4], b = v->quad[4 * q + (k + 3) % 4], kk;
+                    q = across(v, vstart, vquads, q, a, b, &kk);
+                    k = q >= 0 ? kk : k;
+                }
+            }
+        }
+    free(vstart);
+    free(vquads);
+    free(fill);
+    free(orig);
+    return st;
+}
+
 /* Design 4: the order-Q quads.  Element sides on the boundary follow the
  * CAD curve between their vertices' arc lengths; other sides are straight;
  * element interiors by transfinite interpolation of their four sides. */
-static sq_status raise_order(const cad_face *face, const vmesh *v, int Q, sq_node_kind kind,
-                             sq_quad_mesh **out, sq_error *err)
+/* A side inside a boundary layer that runs along its wall is curved like
+ * the wall: its nodes at arc length and distance interpolated between its
+ * vertices', offset from the wall along the inward normal, so thin layer
+ * elements follow a curved wall instead of being cut by it.  Returns 1 and
+ * fills c, s0, s1, d0, d1 for such a side. */
+static int layer_side(const cad_face *face, const sq_mesher_options *o, double thick,
+                      const double A[2], const double B[2], int *c, double *s0, double *s1,
+                      double *d0, double *d1)
 {
+    for (int b = 0; b < o->nbl; b++) {
+        int e = o->bl_edges[b];
+        if (cad_face_edge_project(face, e, A, s0, NULL, d0, NULL) != SQ_OK ||
+            cad_face_edge_project(face, e, B, s1, NULL, d1, NULL) != SQ_OK)
+            return 0;
+        if (*d0 > thick || *d1 > thick) continue;
+        double Lc = cad_face_edge_length(face, e);
+        if (fabs(*s1 - *s0) > 0.5 * Lc) { /* a closed edge: the shorter way round */
+            if (*s1 > *s0) *s0 += Lc;
+            else *s1 += Lc;
+        }
+        /* along the wall, not across it */
+        if (fabs(*s1 - *s0) <= fabs(*d1 - *d0)) return 0;
+        *c = e;
+        return 1;
+    }
+    return 0;
+}
+
+static sq_status raise_order(const cad_face *face, const vmesh *v, int Q, sq_node_kind kind,
+                             const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
+{
+    double thick = opt->nbl > 0 ? 1.5 * bl_thickness(opt, opt->bl_layers) : 0.0;
     double tau[11];
     SQ_TRY(sub_fractions(Q, kind, tau, err));
     /* unique sides: key (min, max) vertex, found through a per-vertex list */
@@ -544,8 +649,20 @@ static sq_status raise_order(const cad_face *face, const vmesh *v, int Q, sq_nod
                         else s1 += Lc;
                     }
                 }
+                int lc = -1;
+                double ls0 = 0.0, ls1 = 0.0, ld0 = 0.0, ld1 = 0.0;
+                int layer = tag < 0 && opt->nbl > 0 &&
+                            layer_side(face, opt, thick, A, B, &lc, &ls0, &ls1, &ld0, &ld1);
                 for (int i = 0; i <= Q && st == SQ_OK; i++) {
-                    if (tag >= 0 && i > 0 && i < Q) {
+                    if (layer && i > 0 && i < Q) {
+                        double s = ls0 + tau[i] * (ls1 - ls0), d = ld0 + tau[i] * (ld1 - ld0);
+                        double Lc = cad_face_edge_length(face, lc), X[2], t[2];
+                        if (s > Lc) s -= Lc;
+                        st = cad_face_edge_eval(face, lc, s, X, t, NULL, err);
+                        /* the face is on the left of the wall's direction */
+                        P[2 * i] = X[0] - d * t[1];
+                        P[2 * i + 1] = X[1] + d * t[0];
+                    } else if (tag >= 0 && i > 0 && i < Q) {
                         double s = s0 + tau[i] * (s1 - s0), Lc = cad_face_edge_length(face, tag);
                         if (s > Lc) s -= Lc;
                         st = cad_face_edge_eval(face, tag, s, &P[2 * i], NULL, NULL, err);
@@ -696,7 +813,8 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
     }
     if (st == SQ_OK) st = smooth(&v, keep, err);
     free(keep);
-    if (st == SQ_OK) st = raise_order(face, &v, Q, opt->nodes, out, err);
+    if (st == SQ_OK && opt->nbl > 0) st = bl_march(face, opt, &v, err);
+    if (st == SQ_OK) st = raise_order(face, &v, Q, opt->nodes, opt, out, err);
     vmesh_free(&v);
     free(grade);
     for (int q = 0; grids && q < L->npatches; q++) patch_grid_free(&grids[q]);

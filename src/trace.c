@@ -31,28 +31,157 @@ static double seg_seg(const double *a0, const double *a1, const double *b0, cons
     return best;
 }
 
-/* Marcon 2019 §3.3: the fronts are within the merge distance, the lines run
- * in opposite directions (|Δα| = π when rounded to π/2) and they close in. */
-static int meet(const sq_tracer *tr, const sq_walker *a, const sq_walker *b)
+/* Direction of segment i of a polyline (unit vector). */
+static void seg_dir(const double *xy, int i, double d[2])
 {
-    if (a->npts < 2 || b->npts < 2) return 0;
-    const double *a1 = &a->xy[2 * (a->npts - 1)], *b1 = &b->xy[2 * (b->npts - 1)];
-    double thr = tr->opt.merge_distance * fmax(a->ht, b->ht);
-    double dx = b1[0] - a1[0], dy = b1[1] - a1[1];
-    if (hypot(dx, dy) > thr + a->h + b->h) return 0; /* cheap reject */
-    long q = lround((a->alpha - b->alpha) / HALF_PI);
-    if ((((q % 4) + 4) % 4) != 2) return 0;
-    double fa[2] = {cos(a->alpha), sin(a->alpha)}, fb[2] = {cos(b->alpha), sin(b->alpha)};
-    if (dx * (fa[0] - fb[0]) + dy * (fa[1] - fb[1]) <= 0.0) return 0;
-    return seg_seg(&a->xy[2 * (a->npts - 2)], a1, &b->xy[2 * (b->npts - 2)], b1) < thr;
+    double dx = xy[2 * i + 2] - xy[2 * i], dy = xy[2 * i + 3] - xy[2 * i + 1], l = hypot(dx, dy);
+    d[0] = l > 0.0 ? dx / l : 0.0;
+    d[1] = l > 0.0 ? dy / l : 0.0;
 }
 
-/* Continue w until it reaches the other line's start (target): the
- * singular point or face vertex of `target` at txy (§3.3: "each of two
+/* cos 45°: Marcon's test for opposite directions (|Δα| rounds to π at π/2
+ * resolution) as a dot product. */
+#define OPPOSITE_COS 0.70710678118654752
+
+/* Distance from segment [p0, p1] to the segments of polyline xy[npts] that
+ * run against direction f (f·seg <= -OPPOSITE_COS); HUGE_VAL if none is
+ * within r.  Comparing with every segment, not only the other front, catches
+ * fronts that pass each other between two rounds (different step sizes). */
+static double against_polyline(const double *p0, const double *p1, const double f[2],
+                               const double *xy, int npts, double r)
+{
+    double best = HUGE_VAL, sl = hypot(p1[0] - p0[0], p1[1] - p0[1]);
+    for (int i = 0; i + 1 < npts; i++) {
+        const double *q0 = &xy[2 * i], *q1 = &xy[2 * i + 2];
+        double ql = hypot(q1[0] - q0[0], q1[1] - q0[1]);
+        if (hypot(q0[0] - p1[0], q0[1] - p1[1]) > r + sl + ql) continue;
+        double d[2];
+        seg_dir(xy, i, d);
+        if (d[0] * f[0] + d[1] * f[1] > -OPPOSITE_COS) continue;
+        double g = seg_seg(p0, p1, q0, q1);
+        if (g < best) best = g;
+    }
+    return best < r ? best : HUGE_VAL;
+}
+
+/* Closest approach of polyline xy[from..npts-1] to point t among points
+ * where the line runs along direction f (f·seg >= OPPOSITE_COS; f NULL: any
+ * direction): distance and vertex index. */
+static double closest_vertex(const double *xy, int npts, int from, const double t[2],
+                             const double *f, int *idx)
+{
+    double best = HUGE_VAL;
+    *idx = -1;
+    for (int i = from < 0 ? 0 : from; i < npts; i++) {
+        if (f) {
+            double d[2];
+            if (npts < 2) break;
+            seg_dir(xy, i + 1 < npts ? i : i - 1, d);
+            if (d[0] * f[0] + d[1] * f[1] < OPPOSITE_COS) continue;
+        }
+        double g = hypot(xy[2 * i] - t[0], xy[2 * i + 1] - t[1]);
+        if (g < best) best = g, *idx = i;
+    }
+    return best;
+}
+
+static int same_node(const sq_sep_end *a, const sq_sep_end *b)
+{
+    return a->kind == b->kind && a->id == b->id;
+}
+
+/* Meeting distance in steps: Marcon's merge distance, but at least
+ * SQ_TRACE_PASS_STEPS for two lines that are one separatrix traced from both
+ * ends (the mutual test below): these must meet whatever their small
+ * lateral offset (Marcon 2019 §3.3 compares fronts within one step; lines
+ * "that would normally just miss each other" are §3.3.1's aggressive case,
+ * merge_distance > SQ_TRACE_PASS_STEPS). */
+static double meet_radius(const sq_tracer *tr, const sq_walker *a, const sq_walker *b)
+{
+    return fmax(tr->opt.merge_distance, SQ_TRACE_PASS_STEPS) * fmax(a->ht, b->ht);
+}
+
+/* Marcon 2019 §3.3, generalized: a (advancing) and b (advancing or ended,
+ * not merged) are one separatrix traced from both ends when
+ *  - a's newest segment comes within r of a segment of b running the
+ *    opposite way (the front against b's recent segments, not only b's
+ *    front: fronts with different steps cannot jump past each other), and
+ *  - b's newest segment likewise comes within r of a running the opposite
+ *    way, or b has already passed a's start within r running against a's
+ *    start direction (b is ahead, or ended beyond a's start).
+ * A front that passes b's start (a singular point or corner) against b's
+ * start direction is the special case where b is the arm it merges with. */
+static int meet(const sq_tracer *tr, const sq_walker *a, const sq_walker *b)
+{
+    if (a->npts < 2 || b->npts < 2 || same_node(&a->start, &b->start)) return 0;
+    double r = meet_radius(tr, a, b);
+    const double *a0 = &a->xy[2 * (a->npts - 2)], *a1 = &a->xy[2 * (a->npts - 1)];
+    double m = r + hypot(a1[0] - a0[0], a1[1] - a0[1]); /* a's segment off b's box */
+    if (a1[0] < b->bb[0] - m || a1[0] > b->bb[2] + m || a1[1] < b->bb[1] - m ||
+        a1[1] > b->bb[3] + m)
+        return 0;
+    double fa[2] = {cos(a->alpha), sin(a->alpha)};
+    /* b's start lies ahead of a's front (two nodes closer than r with arms
+     * pointing away from each other do not meet) */
+    const double *q = b->start_xy, *p = a->start_xy;
+    if ((q[0] - a1[0]) * fa[0] + (q[1] - a1[1]) * fa[1] <= 0.0) return 0;
+    if (against_polyline(a0, a1, fa, b->xy, b->npts, r) == HUGE_VAL) return 0;
+    if (b->active) {
+        const double *b0 = &b->xy[2 * (b->npts - 2)], *b1 = &b->xy[2 * (b->npts - 1)];
+        double fb[2] = {cos(b->alpha), sin(b->alpha)};
+        if ((p[0] - b1[0]) * fb[0] + (p[1] - b1[1]) * fb[1] > 0.0 &&
+            against_polyline(b0, b1, fb, a->xy, a->npts, r) != HUGE_VAL)
+            return 1;
+    }
+    /* b passed a's start, running against a's start direction, after
+     * travelling away from its own start */
+    double back[2] = {-cos(a->start_angle), -sin(a->start_angle)};
+    int idx;
+    if (closest_vertex(b->xy, b->npts, 1, p, back, &idx) >= r) return 0;
+    return hypot(b->xy[2 * idx] - q[0], b->xy[2 * idx + 1] - q[1]) > r;
+}
+
+/* Bring w to the other line's start (target at txy): §3.3 "each of two
  * meeting streamlines are then advanced to the starting point of the
- * other").  Returns *ok = 0 if it ends elsewhere. */
+ * other".  If w has already passed it within `accept` (b ahead of a), w is
+ * cut at its closest approach and ends exactly on the target; if w is still
+ * advancing it is advanced (advance_to).  *ok = 0 if neither works. */
 static sq_status advance_to(sq_tracer *tr, sq_walker *w, const sq_sep_end *target,
-                            const double txy[2], double budget, int *ok, sq_error *err)
+                            const double txy[2], double budget, double accept, int *ok,
+                            sq_error *err);
+
+static sq_status reach(sq_tracer *tr, sq_walker *w, const sq_sep_end *target, const double txy[2],
+                       double budget, double accept, int *ok, sq_error *err)
+{
+    *ok = 0;
+    if (!w->active && same_node(&w->end, target)) {
+        *ok = 1;
+        return SQ_OK;
+    }
+    int idx;
+    double d = closest_vertex(w->xy, w->npts, 1, txy, NULL, &idx);
+    if (idx >= 1 && d < accept && (idx < w->npts - 1 || !w->active)) {
+        /* passed (or ended next to) the target: cut there, end on it */
+        w->npts = idx;
+        w->length = 0.0;
+        for (int i = 1; i < w->npts; i++)
+            w->length += hypot(w->xy[2 * i] - w->xy[2 * i - 2], w->xy[2 * i + 1] - w->xy[2 * i - 1]);
+        SQ_TRY(sq_walker_push(w, txy, err));
+        w->active = 0;
+        w->end = *target;
+        *ok = 1;
+        return SQ_OK;
+    }
+    if (!w->active) return SQ_OK;
+    return advance_to(tr, w, target, txy, budget, accept, ok, err);
+}
+
+/* Advance w until it reaches target at txy: captured there, ended on the
+ * boundary next to it, or passing it at its closest approach within
+ * `accept`.  Gives up after `budget` more length. */
+static sq_status advance_to(sq_tracer *tr, sq_walker *w, const sq_sep_end *target,
+                            const double txy[2], double budget, double accept, int *ok,
+                            sq_error *err)
 {
     *ok = 0;
     double len0 = w->length, dmin = HUGE_VAL;
@@ -61,11 +190,11 @@ static sq_status advance_to(sq_tracer *tr, sq_walker *w, const sq_sep_end *targe
         const double *x = &w->xy[2 * (w->npts - 1)];
         double d = hypot(x[0] - txy[0], x[1] - txy[1]);
         double rc = tr->opt.capture_rel * w->ht;
+        double acc = fmax(fmax(accept, 2.0 * rc), 0.05 * len0);
         if (!w->active) {
-            if ((w->end.kind == SQ_END_SINGULAR || w->end.kind == SQ_END_CORNER) &&
-                w->end.kind == target->kind && w->end.id == target->id) {
+            if (same_node(&w->end, target)) {
                 *ok = 1;
-            } else if (w->end.kind != SQ_END_OPEN && d < fmax(rc, 0.05 * len0)) {
+            } else if (w->end.kind != SQ_END_OPEN && d < acc) {
                 /* ended next to the target (e.g. on the boundary beside the
                  * corner): the end is moved onto it */
                 w->xy[2 * (w->npts - 1)] = txy[0];
@@ -80,8 +209,8 @@ static sq_status advance_to(sq_tracer *tr, sq_walker *w, const sq_sep_end *targe
             break;
         }
         /* passing the target at a distance: the closest approach is
-         * accepted if it is close relative to the line */
-        if (d > dmin && dmin < fmax(2.0 * rc, 0.05 * len0)) {
+         * accepted if within `accept` (or close relative to the line) */
+        if (d > dmin && dmin < acc) {
             w->npts--;
             SQ_TRY(sq_walker_push(w, txy, err));
             *ok = 1;
@@ -151,38 +280,74 @@ static sq_status blend(const double *axy, int na, const double *bxy, int nb, sq_
     return SQ_OK;
 }
 
-/* Merge walkers a and b that met: each is advanced to the other's start,
- * then the two are blended.  If either misses, the fallback joins a's part
- * to b's part reversed (a kink of at most the merge distance). */
-static sq_status merge(sq_tracer *tr, sq_walker *a, sq_walker *b, sq_separatrix *out,
+/* Largest turning (radians) between consecutive segments of a polyline,
+ * its first and last `skip` segments left out (there the blend follows one
+ * line exactly: its own start turning near the singular point). */
+static double max_turning(const double *xy, int n, int skip)
+{
+    double best = 0.0;
+    for (int i = 1 + skip; i + 1 + skip < n; i++) {
+        double d0[2], d1[2];
+        seg_dir(xy, i - 1, d0);
+        seg_dir(xy, i, d1);
+        double t = fabs(atan2(d0[0] * d1[1] - d0[1] * d1[0], d0[0] * d1[0] + d0[1] * d1[1]));
+        if (t > best) best = t;
+    }
+    return best;
+}
+
+/* A merged line turning more than this between consecutive segments has a
+ * kink: the two lines were not one separatrix (radians, 10 degrees). */
+#define MERGE_MAX_TURN 0.17453292519943295
+
+static sq_status walker_copy(const sq_walker *w, sq_walker *c, sq_error *err)
+{
+    *c = *w;
+    c->xy = malloc(2 * (size_t)(w->cap ? w->cap : 1) * sizeof *c->xy);
+    if (!c->xy) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory (%d points)", w->cap);
+    memcpy(c->xy, w->xy, 2 * (size_t)w->npts * sizeof *c->xy);
+    return SQ_OK;
+}
+
+/* Merge walkers a and b that met: each is brought to the other's start
+ * (reach), then the two are blended with the cos^2/sin^2 weights.  Done on
+ * copies: if either cannot reach the other's start, *done = 0 and a, b are
+ * left as they were (they were not one separatrix after all). */
+static sq_status merge(sq_tracer *tr, sq_walker *a, sq_walker *b, sq_separatrix *out, int *done,
                        sq_error *err)
 {
-    int na0 = a->npts, nb0 = b->npts, oka = 0, okb = 0;
+    int oka = 0, okb = 0;
     double budget = 2.0 * (a->length + b->length) + 10.0 * (a->ht + b->ht);
-    a->active = b->active = 1;
-    SQ_TRY(advance_to(tr, a, &b->start, b->start_xy, budget, &oka, err));
-    if (oka) SQ_TRY(advance_to(tr, b, &a->start, a->start_xy, budget, &okb, err));
+    double accept = 1.5 * meet_radius(tr, a, b);
+    sq_walker ca, cb;
+    *done = 0;
     memset(out, 0, sizeof *out);
-    if (oka && okb) {
-        SQ_TRY(blend(a->xy, a->npts, b->xy, b->npts, out, err));
-    } else {
-        int n = na0 + nb0;
-        double *xy = malloc(2 * (size_t)n * sizeof *xy);
-        if (!xy) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory (merging)");
-        memcpy(xy, a->xy, 2 * (size_t)na0 * sizeof *xy);
-        for (int i = 0; i < nb0; i++) {
-            xy[2 * (na0 + i)] = b->xy[2 * (nb0 - 1 - i)];
-            xy[2 * (na0 + i) + 1] = b->xy[2 * (nb0 - 1 - i) + 1];
-        }
-        out->xy = xy;
-        out->npts = n;
+    SQ_TRY(walker_copy(a, &ca, err));
+    sq_status st = walker_copy(b, &cb, err);
+    if (st != SQ_OK) {
+        sq_walker_free(&ca);
+        return st;
     }
-    out->start = a->start;
-    out->end = b->start;
-    out->start_angle = a->start_angle;
-    out->end_angle = b->start_angle + M_PI;
-    out->merged = 1;
-    return SQ_OK;
+    st = reach(tr, &ca, &b->start, b->start_xy, budget, accept, &oka, err);
+    if (st == SQ_OK && oka) st = reach(tr, &cb, &a->start, a->start_xy, budget, accept, &okb, err);
+    if (st == SQ_OK && oka && okb) st = blend(ca.xy, ca.npts, cb.xy, cb.npts, out, err);
+    if (st == SQ_OK && oka && okb && max_turning(out->xy, out->npts, 2) > MERGE_MAX_TURN) {
+        free(out->xy); /* a kink: refuse (Marcon's blend must stay smooth) */
+        memset(out, 0, sizeof *out);
+        oka = 0;
+    }
+    if (st == SQ_OK && oka && okb) {
+        out->start = a->start;
+        out->end = b->start;
+        out->start_angle = a->start_angle;
+        out->end_angle = b->start_angle + M_PI;
+        out->merged = 1;
+        a->active = b->active = 0;
+        *done = 1;
+    }
+    sq_walker_free(&ca);
+    sq_walker_free(&cb);
+    return st;
 }
 
 static sq_status to_separatrix(sq_walker *w, sq_separatrix *s, sq_error *err)
@@ -204,6 +369,7 @@ static sq_status to_separatrix(sq_walker *w, sq_separatrix *s, sq_error *err)
 typedef struct {
     sq_walker *w;
     int *partner; /* merged with, or -1 */
+    char *refused; /* n*n: pairs whose merge failed (not tried again) */
     sq_separatrix *merged;
     int n;
 } walk_set;
@@ -216,6 +382,7 @@ static void walk_set_free(walk_set *ws)
     }
     free(ws->w);
     free(ws->partner);
+    free(ws->refused);
     free(ws->merged);
 }
 
@@ -267,18 +434,26 @@ static sq_status run(sq_tracer *tr, const int *vertex_quads, walk_set *ws, sq_er
             w->start.id = k;
         }
     }
+    ws->refused = calloc((size_t)ws->n * ws->n + 1, 1);
+    if (!ws->refused) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     /* synchronous advance (§3.3), fronts compared after every round */
     int nactive = ws->n;
     while (nactive > 0) {
         for (int i = 0; i < ws->n; i++)
             if (ws->w[i].active) SQ_TRY(sq_walker_step(tr, &ws->w[i], err));
         for (int i = 0; i < ws->n; i++) {
-            if (!ws->w[i].active) continue;
-            for (int q = i + 1; q < ws->n; q++) {
-                if (!ws->w[q].active || !meet(tr, &ws->w[i], &ws->w[q])) continue;
-                ws->partner[i] = q;
-                ws->partner[q] = i;
-                SQ_TRY(merge(tr, &ws->w[i], &ws->w[q], &ws->merged[i], err));
+            if (!ws->w[i].active || ws->partner[i] >= 0) continue;
+            for (int q = 0; q < ws->n; q++) {
+                if (q == i || ws->partner[q] >= 0 || ws->refused[i * ws->n + q]) continue;
+                if (!meet(tr, &ws->w[i], &ws->w[q])) continue;
+                int lo = i < q ? i : q, hi = i < q ? q : i, done;
+                SQ_TRY(merge(tr, &ws->w[lo], &ws->w[hi], &ws->merged[lo], &done, err));
+                if (!done) {
+                    ws->refused[i * ws->n + q] = ws->refused[q * ws->n + i] = 1;
+                    continue;
+                }
+                ws->partner[lo] = hi;
+                ws->partner[hi] = lo;
                 break;
             }
         }

@@ -14,9 +14,18 @@
  *  3. a separatrix stops on the boundary (the crossing with the CAD curve
  *     found exactly and the end snapped onto it), at a singular point
  *     (capture radius: the end snapped onto it), or on meeting another one
- *     head-on (fronts within one step, directions opposite); two that meet
- *     are merged with Marcon's cos^2/sin^2 weights so both start angles are
- *     kept; `merge_distance` > 1 allows aggressive merging (§3.3.1);
+ *     head-on: each front's newest segment within the meeting distance of a
+ *     segment of the other line running the opposite way (so fronts with
+ *     different steps cannot jump past each other), the other's start ahead,
+ *     and the other front likewise near this line, or the other line
+ *     already past this one's start (a front passing a singular point or
+ *     corner against one of its arms meets that arm).  The meeting distance
+ *     is max(merge_distance, SQ_TRACE_PASS_STEPS) steps; each line is then
+ *     brought to the other's start (advanced, or cut at its closest approach
+ *     if already past) and the two are blended with Marcon's cos^2/sin^2
+ *     weights so both start angles are kept and the result has no kink; a
+ *     pair that cannot reach each other's start is not merged.
+ *     `merge_distance` > SQ_TRACE_PASS_STEPS is aggressive merging (§3.3.1);
  *  4. a separatrix longer than max_length ends SQ_END_OPEN (a limit cycle
  *     for the layout's correction to cut). */
 #ifndef SQ_TRACE_H
@@ -26,6 +35,12 @@
 #include "face_info.h"
 #include "separatrix.h"
 #include "singularity.h"
+
+/* Two lines that are one separatrix traced from both ends (each front runs
+ * back along the other line, or past its start, in the opposite direction)
+ * meet within max(merge_distance, SQ_TRACE_PASS_STEPS) steps, even with
+ * normal merging (Marcon 2019 §3.3: they would otherwise pass each other). */
+#define SQ_TRACE_PASS_STEPS 4.0
 
 typedef struct {
     double step_rel;       /* step = step_rel * local element size (default 0.05) */

@@ -93,6 +93,15 @@ sq_status sq_walker_push(sq_walker *w, const double p[2], sq_error *err)
     }
     w->xy[2 * w->npts] = p[0];
     w->xy[2 * w->npts + 1] = p[1];
+    if (w->npts == 0) {
+        w->bb[0] = w->bb[2] = p[0];
+        w->bb[1] = w->bb[3] = p[1];
+    } else {
+        w->bb[0] = fmin(w->bb[0], p[0]);
+        w->bb[1] = fmin(w->bb[1], p[1]);
+        w->bb[2] = fmax(w->bb[2], p[0]);
+        w->bb[3] = fmax(w->bb[3], p[1]);
+    }
     w->npts++;
     return SQ_OK;
 }

@@ -40,6 +40,8 @@ typedef struct {
     sq_sep_end start, end;
     double start_angle, end_angle;
     double start_xy[2];
+    double bb[4];      /* bounding box of xy (xmin, ymin, xmax, ymax; may
+                          exceed it after a cut), for cheap meeting rejects */
 } sq_walker;
 
 sq_status sq_tracer_init(sq_tracer *tr, const sq_cross_field *field, const cad_face *face,
