@@ -308,6 +308,7 @@ static sq_status fill_patch(const sq_layout *L, const edge_nodes *en, int Q, int
 typedef struct {
     int nv, nq;
     double *xy;     /* 2*nv */
+    int *foot;      /* nv: 1 where a separatrix ends on the boundary */
     int *quad;      /* 4*nq corner vertices, counter-clockwise */
     int *patch;     /* nq */
     int *side_tag;  /* 4*nq: CAD edge under side k, or -1 */
@@ -316,6 +317,7 @@ typedef struct {
 static void vmesh_free(vmesh *v)
 {
     free(v->xy);
+    free(v->foot);
     free(v->quad);
     free(v->patch);
     free(v->side_tag);
@@ -342,9 +344,52 @@ static int quad_valid(const vmesh *v, int q)
  * a move kept only if every quad around the vertex stays convex at its
  * corners: evens out the angles that the patches' transfinite
  * interpolation leaves along separatrices and around singular points. */
-static sq_status smooth(vmesh *v, const int *keep, sq_error *err)
+/* Slide boundary vertex i towards the middle of its two boundary
+ * neighbours, staying on the CAD curve: keeps the spacing even where a
+ * patch side is made of several layout edges (e.g. across the seam vertex
+ * of a closed curve).  Returns the distance moved. */
+static double slide(const cad_face *face, vmesh *v, int i, const int nb[2], const int tg[2],
+                    const int *adjq, int q0, int q1)
+{
+    double mid[2] = {0.5 * (v->xy[2 * nb[0]] + v->xy[2 * nb[1]]),
+                     0.5 * (v->xy[2 * nb[0] + 1] + v->xy[2 * nb[1] + 1])};
+    double best[2] = {mid[0], mid[1]}, bestd = HUGE_VAL;
+    for (int k = 0; k < 2; k++) {
+        double foot[2], d;
+        if (cad_face_edge_project(face, tg[k], mid, NULL, foot, &d, NULL) != SQ_OK) return 0.0;
+        if (d < bestd) {
+            bestd = d;
+            best[0] = foot[0];
+            best[1] = foot[1];
+        }
+    }
+    double old[2] = {v->xy[2 * i], v->xy[2 * i + 1]};
+    v->xy[2 * i] = best[0];
+    v->xy[2 * i + 1] = best[1];
+    for (int t = q0; t < q1; t++)
+        if (!quad_valid(v, adjq[t])) {
+            v->xy[2 * i] = old[0];
+            v->xy[2 * i + 1] = old[1];
+            return 0.0;
+        }
+    return hypot(best[0] - old[0], best[1] - old[1]);
+}
+
+static sq_status smooth(const cad_face *face, const sq_face_info *info, vmesh *v, const int *keep,
+                        sq_error *err)
 {
     int *deg = calloc((size_t)v->nv, sizeof(int)), *fixed = calloc((size_t)v->nv, sizeof(int));
+    /* boundary neighbours and the CAD edges of the two boundary sides */
+    int *bn = malloc(sizeof(int) * 2 * (size_t)v->nv), *bt = malloc(sizeof(int) * 2 * (size_t)v->nv);
+    int *nbn = calloc((size_t)v->nv, sizeof(int));
+    if (!bn || !bt || !nbn) {
+        free(deg);
+        free(fixed);
+        free(bn);
+        free(bt);
+        free(nbn);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
     int *start = calloc((size_t)v->nv + 1, sizeof(int)), *adjq = malloc(sizeof(int) * 4 * (size_t)v->nq);
     sq_status st = deg && fixed && start && adjq ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK) {
@@ -352,10 +397,30 @@ static sq_status smooth(vmesh *v, const int *keep, sq_error *err)
             for (int k = 0; k < 4; k++) {
                 deg[v->quad[4 * q + k]]++;
                 if (v->side_tag[4 * q + k] >= 0) {
-                    fixed[v->quad[4 * q + k]] = 1;
-                    fixed[v->quad[4 * q + (k + 1) % 4]] = 1;
+                    int a = v->quad[4 * q + k], b = v->quad[4 * q + (k + 1) % 4];
+                    fixed[a] = fixed[b] = 1;
+                    if (nbn[a] < 2) bn[2 * a + nbn[a]] = b, bt[2 * a + nbn[a]++] = v->side_tag[4 * q + k];
+                    if (nbn[b] < 2) bn[2 * b + nbn[b]] = a, bt[2 * b + nbn[b]++] = v->side_tag[4 * q + k];
                 }
             }
+        /* boundary vertices that may slide: two quads, two boundary
+         * neighbours on the same CAD edge, not a separatrix's foot, not in a
+         * boundary layer, not at a corner of the face */
+        double scale = hypot(info->bbox[2] - info->bbox[0], info->bbox[3] - info->bbox[1]);
+        for (int i = 0; i < v->nv; i++) {
+            /* both sides on one CAD edge: an element side must never span
+             * two curves (its high-order nodes follow one) */
+            if (nbn[i] != 2 || deg[i] != 2 || v->foot[i] || (keep && keep[i]) ||
+                bt[2 * i] != bt[2 * i + 1]) {
+                nbn[i] = 0;
+                continue;
+            }
+            for (int c = 0; c < info->nvertices; c++)
+                if (!info->vertices[c].smooth &&
+                    hypot(info->vertices[c].x - v->xy[2 * i], info->vertices[c].y - v->xy[2 * i + 1]) <
+                        1e-9 * scale)
+                    nbn[i] = 0;
+        }
         for (int i = 0; i < v->nv; i++) {
             if (deg[i] != 4) fixed[i] = 1; /* singular points stay where the field put them */
             if (keep && keep[i]) fixed[i] = 1;
@@ -396,8 +461,13 @@ static sq_status smooth(vmesh *v, const int *keep, sq_error *err)
                 moved = fmax(moved, hypot(v->xy[2 * i] - old[0], v->xy[2 * i + 1] - old[1]));
             }
         }
+        for (int i = 0; i < v->nv; i++)
+            if (nbn[i] == 2) moved = fmax(moved, slide(face, v, i, &bn[2 * i], &bt[2 * i], adjq, start[i], start[i + 1]));
         if (moved < 1e-12) break;
     }
+    free(bn);
+    free(bt);
+    free(nbn);
     free(deg);
     free(fixed);
     free(start);
@@ -435,7 +505,8 @@ static sq_status build_vmesh(const sq_layout *L, patch_grid *grids, long nids, v
         if (map[i] == 0) map[i] = nv++;
     v->nv = nv;
     v->xy = malloc(sizeof(double) * 2 * (size_t)(nv + 1));
-    if (!v->xy) {
+    v->foot = calloc((size_t)nv + 1, sizeof(int));
+    if (!v->xy || !v->foot) {
         free(map);
         free(gxy);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
@@ -444,6 +515,8 @@ static sq_status build_vmesh(const sq_layout *L, patch_grid *grids, long nids, v
         if (map[i] >= 0) {
             v->xy[2 * map[i]] = gxy[2 * i];
             v->xy[2 * map[i] + 1] = gxy[2 * i + 1];
+            /* the layout's nodes come first in the id space */
+            if (i < L->nnodes) v->foot[map[i]] = L->nodes[i].kind == SQ_LNODE_FOOT;
         }
     int qq = 0;
     for (int q = 0; q < L->npatches; q++) {
@@ -811,7 +884,7 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
                 keep[i] = d < T;
             }
     }
-    if (st == SQ_OK) st = smooth(&v, keep, err);
+    if (st == SQ_OK) st = smooth(face, info, &v, keep, err);
     free(keep);
     if (st == SQ_OK && opt->nbl > 0) st = bl_march(face, opt, &v, err);
     if (st == SQ_OK) st = raise_order(face, &v, Q, opt->nodes, opt, out, err);
