@@ -184,6 +184,36 @@ sq_status sq_write_layout_svg(const char *path, const sq_layout_result *r, sq_er
     return sq_outfile_commit(&f, err);
 }
 
+/* At most this many interpolation points per separatrix piece: OCCT's
+ * interpolation cost grows quickly with the point count, and a cubic
+ * B-spline through 48 arc-length samples of a traced line (steps of 1/20
+ * of an element) is within round-off of the mesh's resolution. */
+#define STEP_MAX_POINTS 48
+
+/* xy resampled by arc length to n points, ends exact. */
+static void resample(const double *xy, int npts, int n, double *out)
+{
+    double total = 0.0;
+    for (int i = 1; i < npts; i++) total += hypot(xy[2 * i] - xy[2 * i - 2], xy[2 * i + 1] - xy[2 * i - 1]);
+    int j = 0;
+    double acc = 0.0;
+    for (int k = 0; k < n; k++) {
+        double target = total * k / (n - 1);
+        while (j + 2 < npts) {
+            double l = hypot(xy[2 * j + 2] - xy[2 * j], xy[2 * j + 3] - xy[2 * j + 1]);
+            if (acc + l >= target) break;
+            acc += l;
+            j++;
+        }
+        double l = hypot(xy[2 * j + 2] - xy[2 * j], xy[2 * j + 3] - xy[2 * j + 1]);
+        double t = l > 0.0 ? fmin(fmax((target - acc) / l, 0.0), 1.0) : 0.0;
+        out[2 * k] = xy[2 * j] + t * (xy[2 * j + 2] - xy[2 * j]);
+        out[2 * k + 1] = xy[2 * j + 1] + t * (xy[2 * j + 3] - xy[2 * j + 1]);
+    }
+    out[0] = xy[0], out[1] = xy[1];
+    out[2 * (n - 1)] = xy[2 * (npts - 1)], out[2 * (n - 1) + 1] = xy[2 * (npts - 1) + 1];
+}
+
 sq_status sq_write_layout_step(const char *path, const cad_model *model, int face_index,
                                const cad_face *face, const sq_layout *L, int *nfaces,
                                sq_error *err)
@@ -192,17 +222,27 @@ sq_status sq_write_layout_step(const char *path, const cad_model *model, int fac
     for (int e = 0; e < L->nedges; e++) nc += L->edges[e].cad_edge < 0;
     int *npts = malloc(sizeof(int) * (size_t)(nc + 1));
     const double **xy = malloc(sizeof(double *) * (size_t)(nc + 1));
-    if (!npts || !xy) {
+    double *pool = malloc(sizeof(double) * 2 * STEP_MAX_POINTS * (size_t)(nc + 1));
+    if (!npts || !xy || !pool) {
         free(npts);
         free(xy);
+        free(pool);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
     int k = 0;
-    for (int e = 0; e < L->nedges; e++)
-        if (L->edges[e].cad_edge < 0) {
-            npts[k] = L->edges[e].npts;
-            xy[k++] = L->edges[e].xy;
+    for (int e = 0; e < L->nedges; e++) {
+        const sq_layout_edge *E = &L->edges[e];
+        if (E->cad_edge >= 0) continue;
+        if (E->npts > STEP_MAX_POINTS) {
+            double *p = pool + 2 * STEP_MAX_POINTS * (size_t)k;
+            resample(E->xy, E->npts, STEP_MAX_POINTS, p);
+            npts[k] = STEP_MAX_POINTS;
+            xy[k++] = p;
+        } else {
+            npts[k] = E->npts;
+            xy[k++] = E->xy;
         }
+    }
     cad_split *split = NULL;
     sq_status st = cad_face_split(model, face_index, face, nc, npts, xy, &split, err);
     if (st == SQ_OK) {
@@ -212,5 +252,6 @@ sq_status sq_write_layout_step(const char *path, const cad_model *model, int fac
     cad_split_free(&split);
     free(npts);
     free(xy);
+    free(pool);
     return st;
 }
