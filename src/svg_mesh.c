@@ -3,6 +3,7 @@
 #include "tri_geom.h"
 
 #include <math.h>
+#include <string.h>
 
 #define NSUB 16 /* polyline points per curved edge */
 
@@ -89,4 +90,31 @@ void sq_svg_mesh_isolines(sq_svg *svg, const sem_tri_mesh *m, const sem_tri_lagr
                     }
                 }
     }
+}
+
+sq_status sq_svg_mesh_open(const char *path, const sem_tri_mesh *m, const char *interior_color,
+                           double interior_width, sq_svg_mesh_picture *pic, sq_error *err)
+{
+    memset(pic, 0, sizeof *pic);
+    SQ_TRY(sem_tri_lagrange_create(m->order, &pic->lag, err));
+    sq_status st = sq_outfile_open(path, &pic->file, err);
+    if (st != SQ_OK) {
+        sem_tri_lagrange_free(&pic->lag);
+        return st;
+    }
+    sq_svg_mesh_bbox(m, pic->bbox);
+    sq_svg_begin(&pic->svg, pic->file.fp, pic->bbox, 900.0, 700.0);
+    sq_svg_mesh_edges(&pic->svg, m, pic->lag, 1, interior_color, interior_width, "#1a1a1a", 2.0);
+    return SQ_OK;
+}
+
+sq_status sq_svg_mesh_close(sq_svg_mesh_picture *pic, sq_status status, sq_error *err)
+{
+    sem_tri_lagrange_free(&pic->lag);
+    if (status != SQ_OK) {
+        sq_outfile_abort(&pic->file);
+        return status;
+    }
+    sq_svg_end(&pic->svg);
+    return sq_outfile_commit(&pic->file, err);
 }

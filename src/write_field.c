@@ -118,19 +118,10 @@ static double field_component(void *p, int e, double r, double s)
 sq_status sq_write_field_svg(const char *path, const sq_field_analysis *a, sq_error *err)
 {
     const sem_tri_mesh *m = a->tri.mesh;
-    sem_tri_lagrange *lag = NULL;
-    SQ_TRY(sem_tri_lagrange_create(m->order, &lag, err));
-    sq_outfile f;
-    sq_status st = sq_outfile_open(path, &f, err);
-    if (st != SQ_OK) {
-        sem_tri_lagrange_free(&lag);
-        return st;
-    }
-    double bb[4];
-    sq_svg_mesh_bbox(m, bb);
-    sq_svg svg;
-    sq_svg_begin(&svg, f.fp, bb, 900.0, 700.0);
-    sq_svg_mesh_edges(&svg, m, lag, 1, "#dddddd", 0.6, "#1a1a1a", 2.0);
+    sq_svg_mesh_picture pic;
+    SQ_TRY(sq_svg_mesh_open(path, m, "#dddddd", 0.6, &pic, err));
+    sq_svg *svgp = &pic.svg;
+    const double *bb = pic.bbox;
     /* crosses on a grid */
     double w = bb[2] - bb[0], h = bb[3] - bb[1], step = fmax(w, h) / 28.0;
     int elem = -1;
@@ -141,33 +132,32 @@ sq_status sq_write_field_svg(const char *path, const sq_field_analysis *a, sq_er
             double psi = 0.25 * atan2(uv[1], uv[0]), l = 0.33 * step;
             double c = l * cos(psi), s = l * sin(psi);
             double seg1[4] = {x - c, y - s, x + c, y + s}, seg2[4] = {x + s, y - c, x - s, y + c};
-            sq_svg_polyline(&svg, 2, seg1, 0, "#777777", 1.0, "none");
-            sq_svg_polyline(&svg, 2, seg2, 0, "#777777", 1.0, "none");
+            sq_svg_polyline(svgp, 2, seg1, 0, "#777777", 1.0, "none");
+            sq_svg_polyline(svgp, 2, seg2, 0, "#777777", 1.0, "none");
         }
     /* u = 0 and v = 0; round-off around an identically zero boundary value
      * is not a contour */
     for (int c = 0; c < 2; c++) {
         comp_ctx cc = {a->field.uv, c};
-        sq_svg_mesh_isolines(&svg, m, lag, 3 * a->field.order, field_component, &cc, 0.0, 0.0, 1e-10,
+        sq_svg_mesh_isolines(svgp, m, pic.lag, 3 * a->field.order, field_component, &cc, 0.0, 0.0, 1e-10,
                              NULL, c ? "#8e44ad" : "#1e9e3a", 1.6);
     }
     for (int k = 0; k < a->npoints; k++)
-        sq_svg_circle(&svg, a->points[k].x, a->points[k].y, 6.0, sq_svg_valence_color(a->points[k].valence));
+        sq_svg_circle(svgp, a->points[k].x, a->points[k].y, 6.0,
+                      sq_svg_valence_color(a->points[k].valence));
     for (int k = 0; k < a->info.nvertices; k++) {
         const sq_vertex *v = &a->info.vertices[k];
         if (v->smooth) continue;
         char label[16];
         snprintf(label, sizeof label, "%d", a->corners[k].valence);
-        sq_svg_circle(&svg, v->x, v->y, 3.5, "#1a1a1a");
-        sq_svg_text(&svg, v->x, v->y, 6.0, -6.0, 16.0, "#1a1a1a", label);
+        sq_svg_circle(svgp, v->x, v->y, 3.5, "#1a1a1a");
+        sq_svg_text(svgp, v->x, v->y, 6.0, -6.0, 16.0, "#1a1a1a", label);
     }
     char caption[200];
     snprintf(caption, sizeof caption,
              "guiding field, %s P=%d: %d singular points; u=0 green, v=0 purple; "
              "valence 3 blue, 5 red, 6 orange, 8 yellow",
              a->field.method == SEM_CG ? "CG" : "DG", a->field.order, a->npoints);
-    sq_svg_text(&svg, bb[0], bb[1], 0.0, 16.0, 12.0, "#333333", caption);
-    sq_svg_end(&svg);
-    sem_tri_lagrange_free(&lag);
-    return sq_outfile_commit(&f, err);
+    sq_svg_text(svgp, bb[0], bb[1], 0.0, 16.0, 12.0, "#333333", caption);
+    return sq_svg_mesh_close(&pic, SQ_OK, err);
 }

@@ -170,17 +170,14 @@ static int cmp_double(const void *a, const void *b)
 sq_status sq_write_htheta_svg(const char *path, const sq_htheta *f, sq_error *err)
 {
     const sem_tri_mesh *m = f->tri.mesh;
-    sem_tri_lagrange *lag = NULL;
-    SQ_TRY(sem_tri_lagrange_create(m->order, &lag, err));
     unsigned char *skip = calloc((size_t)m->ntris + 1, 1);
     double *hv = malloc(sizeof(double) * ((size_t)m->ntris + 1));
-    sq_outfile o = {0};
+    sq_svg_mesh_picture pic;
     sq_status st = !skip || !hv ? SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory")
-                                : sq_outfile_open(path, &o, err);
+                                : sq_svg_mesh_open(path, m, "#eeeeee", 0.5, &pic, err);
     if (st != SQ_OK) {
         free(skip);
         free(hv);
-        sem_tri_lagrange_free(&lag);
         return st;
     }
     for (int e = 0; e < m->ntris; e++)
@@ -192,42 +189,37 @@ sq_status sq_write_htheta_svg(const char *path, const sq_htheta *f, sq_error *er
     qsort(hv, (size_t)m->ntris, sizeof(double), cmp_double);
     const double hlo = hv[(int)(0.02 * (m->ntris - 1))], hhi = hv[(int)(0.98 * (m->ntris - 1))];
     const double hstep = hhi > hlo + 1e-12 ? (hhi - hlo) / 24.0 : 1.0;
-    double bb[4];
-    sq_svg_mesh_bbox(m, bb);
-    sq_svg svg;
-    sq_svg_begin(&svg, o.fp, bb, 900.0, 700.0);
-    sq_svg_mesh_edges(&svg, m, lag, 1, "#eeeeee", 0.5, "#1a1a1a", 2.0);
+    const double *bb = pic.bbox;
+    sq_svg *svg = &pic.svg;
     /* elements at a singular point are left out: H and θ are not
      * polynomial there */
     comp_ctx ch = {f, 0}, ct = {f, 1};
-    sq_svg_mesh_isolines(&svg, f->tri.mesh, lag, 2 * f->h.order, h_or_theta, &ch, hlo, hstep, 0.0,
+    sq_svg_mesh_isolines(svg, f->tri.mesh, pic.lag, 2 * f->h.order, h_or_theta, &ch, hlo, hstep, 0.0,
                          skip, "#d62728", 1.1);
-    sq_svg_mesh_isolines(&svg, f->tri.mesh, lag, 2 * f->h.order, h_or_theta, &ct, 0.0, M_PI / 16.0,
+    sq_svg_mesh_isolines(svg, f->tri.mesh, pic.lag, 2 * f->h.order, h_or_theta, &ct, 0.0, M_PI / 16.0,
                          0.0, skip, "#1f77b4", 1.1);
     /* the branch cut: straight segments between its vertices */
     for (int i = 0; i < f->theta.cut.nedges; i++) {
         const int a = f->theta.cut.edges[2 * i], b = f->theta.cut.edges[2 * i + 1];
         const double seg[4] = {m->vxy[2 * a], m->vxy[2 * a + 1], m->vxy[2 * b], m->vxy[2 * b + 1]};
-        sq_svg_polyline(&svg, 2, seg, 0, "#000000", 2.4, "none");
+        sq_svg_polyline(svg, 2, seg, 0, "#000000", 2.4, "none");
     }
     for (int k = 0; k < f->npoints; k++)
-        sq_svg_circle(&svg, f->points[k].x, f->points[k].y, 6.0, sq_svg_valence_color(f->points[k].valence));
+        sq_svg_circle(svg, f->points[k].x, f->points[k].y, 6.0, sq_svg_valence_color(f->points[k].valence));
     for (int k = 0; k < f->info.nvertices; k++) {
         const sq_vertex *v = &f->info.vertices[k];
         if (v->smooth && f->balance.quads[k] == 2) continue;
         char label[16];
         snprintf(label, sizeof label, "%d", f->balance.quads[k]);
-        sq_svg_circle(&svg, v->x, v->y, 3.5, "#1a1a1a");
-        sq_svg_text(&svg, v->x, v->y, 6.0, -6.0, 16.0, "#1a1a1a", label);
+        sq_svg_circle(svg, v->x, v->y, 3.5, "#1a1a1a");
+        sq_svg_text(svg, v->x, v->y, 6.0, -6.0, 16.0, "#1a1a1a", label);
     }
     char caption[240];
     snprintf(caption, sizeof caption,
              "H-theta, P=%d: H isolines red (step %.3g), theta blue (pi/16), branch cut black",
              f->h.order, hstep);
-    sq_svg_text(&svg, bb[0], bb[1], 0.0, 16.0, 12.0, "#333333", caption);
-    sq_svg_end(&svg);
+    sq_svg_text(svg, bb[0], bb[1], 0.0, 16.0, 12.0, "#333333", caption);
     free(skip);
     free(hv);
-    sem_tri_lagrange_free(&lag);
-    return sq_outfile_commit(&o, err);
+    return sq_svg_mesh_close(&pic, SQ_OK, err);
 }

@@ -19,29 +19,16 @@ sq_status sq_write_tri_vtu(const char *path, const sq_triangulation *t, sq_error
 sq_status sq_write_tri_svg(const char *path, const sq_triangulation *t, sq_error *err)
 {
     const sem_tri_mesh *m = t->mesh;
-    sem_tri_lagrange *lag = NULL;
-    SQ_TRY(sem_tri_lagrange_create(m->order, &lag, err));
-    sq_outfile f;
-    sq_status st = sq_outfile_open(path, &f, err);
-    if (st != SQ_OK) {
-        sem_tri_lagrange_free(&lag);
-        return st;
-    }
-    double bb[4];
-    sq_svg_mesh_bbox(m, bb);
-    sq_svg svg;
-    sq_svg_begin(&svg, f.fp, bb, 900.0, 700.0);
-    sq_svg_mesh_edges(&svg, m, lag, 1, "#3366aa", 0.8, "#1a1a1a", 2.0);
+    sq_svg_mesh_picture pic;
+    SQ_TRY(sq_svg_mesh_open(path, m, "#3366aa", 0.8, &pic, err));
     for (int v = 0; v < m->nverts; v++)
-        sq_svg_circle(&svg, m->vxy[2 * v], m->vxy[2 * v + 1], 1.8, "#3366aa");
+        sq_svg_circle(&pic.svg, m->vxy[2 * v], m->vxy[2 * v + 1], 1.8, "#3366aa");
     char caption[160];
     snprintf(caption, sizeof caption,
              "%d triangles, order %d, min angle %.1f deg, min scaled Jacobian %.3f", m->ntris,
              m->order, t->min_angle_deg, t->min_scaled_jacobian);
-    sq_svg_text(&svg, bb[0], bb[1], 0.0, 16.0, 12.0, "#333333", caption);
-    sq_svg_end(&svg);
-    sem_tri_lagrange_free(&lag);
-    return sq_outfile_commit(&f, err);
+    sq_svg_text(&pic.svg, pic.bbox[0], pic.bbox[1], 0.0, 16.0, 12.0, "#333333", caption);
+    return sq_svg_mesh_close(&pic, SQ_OK, err);
 }
 
 sq_status sq_write_tri_report(const char *path, const char *input, int face,
