@@ -2,6 +2,7 @@
  * and IGES (by extension, case-insensitive) with their units; bad inputs give
  * SQ_ERR_INPUT with a message; OpenCASCADE prints nothing. */
 #include "cad.h"
+#include "t30x_cad.h"
 
 #include <fcntl.h>
 #include <stdio.h>
@@ -9,18 +10,6 @@
 #include <string.h>
 #include <sys/stat.h>
 #include <unistd.h>
-
-static int failures = 0;
-
-#define CHECK(cond, ...)                                                                           \
-    do {                                                                                           \
-        if (!(cond)) {                                                                             \
-            fprintf(stderr, "%s:%d: ", __FILE__, __LINE__);                                        \
-            fprintf(stderr, __VA_ARGS__);                                                          \
-            fprintf(stderr, "\n");                                                                 \
-            ++failures;                                                                            \
-        }                                                                                          \
-    } while (0)
 
 /* A 2 x 1 mm rectangle in z = 0 written by OpenCASCADE 7.6 (BREP, no unit). */
 static const char rect_brep[] =

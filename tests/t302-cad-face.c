@@ -2,59 +2,12 @@
  * coordinates, orientation (area by Green's theorem with the edge
  * evaluation), closure, arc-length parametrization and projection. */
 #include "cad.h"
+#include "t30x_cad.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int failures = 0;
-
-#define CHECK(cond, ...)                                                                           \
-    do {                                                                                           \
-        if (!(cond)) {                                                                             \
-            fprintf(stderr, "%s:%d: ", __FILE__, __LINE__);                                        \
-            fprintf(stderr, __VA_ARGS__);                                                          \
-            fprintf(stderr, "\n");                                                                 \
-            ++failures;                                                                            \
-        }                                                                                          \
-    } while (0)
-
-#define NEAR(name, value, expected, tol)                                                           \
-    CHECK(fabs((value) - (expected)) <= (tol), "%s: value %.17g expected %.17g tolerance %.3g",    \
-          (name), (double)(value), (double)(expected), (double)(tol))
-
-static const double GX[5] = {-0.9061798459386640, -0.5384693101056831, 0.0, 0.5384693101056831,
-                             0.9061798459386640};
-static const double GW[5] = {0.2369268850561891, 0.4786286704993665, 0.5688888888888889,
-                             0.4786286704993665, 0.2369268850561891};
-
-static void eval(const cad_face *f, int e, double s, double p[2], double t[2], double *k)
-{
-    sq_error err;
-    sq_status st = cad_face_edge_eval(f, e, s, p, t, k, &err);
-    if (st != SQ_OK) {
-        fprintf(stderr, "cad_face_edge_eval(edge %d, s %g): %s\n", e, s, err.msg);
-        exit(1);
-    }
-}
-
-/* Signed area of loop l (or of all loops if l < 0): 1/2 sum int (x t_y - y t_x) ds. */
-static double green(const cad_face *f, int l, int panels)
-{
-    double a = 0;
-    for (int e = 0; e < cad_face_num_edges(f); ++e) {
-        if (l >= 0 && cad_face_edge_loop(f, e) != l) continue;
-        double L = cad_face_edge_length(f, e), h = L / panels;
-        for (int i = 0; i < panels; ++i)
-            for (int q = 0; q < 5; ++q) {
-                double s = (i + 0.5) * h + 0.5 * h * GX[q], p[2], t[2];
-                eval(f, e, s, p, t, NULL);
-                a += 0.5 * GW[q] * 0.5 * h * (p[0] * t[1] - p[1] * t[0]);
-            }
-    }
-    return a;
-}
 
 static cad_model *model;
 

@@ -3,27 +3,12 @@
  * triangle in the hole, Steiner points on segments flagged, graded sizes from
  * a callback; concave domain without holes; duplicates; bad input. */
 #include "cad.h"
+#include "t30x_cad.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-
-static int failures = 0;
-
-#define CHECK(cond, ...)                                                                           \
-    do {                                                                                           \
-        if (!(cond)) {                                                                             \
-            fprintf(stderr, "%s:%d: ", __FILE__, __LINE__);                                        \
-            fprintf(stderr, __VA_ARGS__);                                                          \
-            fprintf(stderr, "\n");                                                                 \
-            ++failures;                                                                            \
-        }                                                                                          \
-    } while (0)
-
-#define NEAR(name, value, expected, tol)                                                           \
-    CHECK(fabs((value) - (expected)) <= (tol), "%s: value %.17g expected %.17g tolerance %.3g",    \
-          (name), (double)(value), (double)(expected), (double)(tol))
 
 typedef struct {
     double area, min_angle, max_edge;

@@ -2,6 +2,7 @@
  * separatrices meeting at a valence-4 node: 4 quad patches of area 1/4,
  * the node a corner of 4 patches, each side made of one edge. */
 #include "layout.h"
+#include "t51x_layout.h"
 #include "test_util.h"
 
 #include <gsl/gsl_errno.h>
@@ -22,18 +23,6 @@ static void straight(sq_separatrix *s, const double a[2], const double b[2], int
     s->merged = 0;
 }
 
-static sq_sep_end foot(const cad_face *f, const double p[2])
-{
-    int best = -1;
-    double bs = 0, bd = HUGE_VAL;
-    for (int e = 0; e < cad_face_num_edges(f); e++) {
-        double s, d;
-        cad_face_edge_project(f, e, p, &s, NULL, &d, NULL);
-        if (d < bd) bd = d, best = e, bs = s;
-    }
-    return (sq_sep_end){SQ_END_BOUNDARY, best, bs};
-}
-
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -52,7 +41,7 @@ int main(void)
     double ctr[2] = {0.5, 0.5}, mids[4][2] = {{0.5, 0}, {1, 0.5}, {0.5, 1}, {0, 0.5}};
     sq_separatrix s[4];
     for (int k = 0; k < 4; k++)
-        straight(&s[k], ctr, mids[k], 11, (sq_sep_end){SQ_END_SINGULAR, 0, 0}, foot(f, mids[k]));
+        straight(&s[k], ctr, mids[k], 11, (sq_sep_end){SQ_END_SINGULAR, 0, 0}, nearest_foot(f, mids[k], NULL));
     sq_separatrix_set set = {4, 4, s};
     sq_layout L;
     SQ_TEST_OK(sq_layout_graph(f, &info, quads, 1, &c, &set, &L, &err), err);

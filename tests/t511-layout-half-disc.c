@@ -3,6 +3,7 @@
  * patches, each valence-3 point a corner of 3 patches, the two 90° corners
  * of one patch each, areas summing to π/2. */
 #include "layout.h"
+#include "t51x_layout.h"
 #include "test_util.h"
 
 #include <gsl/gsl_errno.h>
@@ -20,20 +21,6 @@ static void straight(sq_separatrix *s, const double a[2], const double b[2], int
     s->start = e0;
     s->end = e1;
     s->merged = 0;
-}
-
-static sq_sep_end foot(const cad_face *f, double p[2])
-{
-    int best = -1;
-    double bs = 0, bd = HUGE_VAL, q[2] = {0, 0};
-    for (int e = 0; e < cad_face_num_edges(f); e++) {
-        double s, d, x[2];
-        cad_face_edge_project(f, e, p, &s, x, &d, NULL);
-        if (d < bd) bd = d, best = e, bs = s, q[0] = x[0], q[1] = x[1];
-    }
-    p[0] = q[0];
-    p[1] = q[1];
-    return (sq_sep_end){SQ_END_BOUNDARY, best, bs};
 }
 
 int main(void)
@@ -55,13 +42,13 @@ int main(void)
     sq_sep_end S0 = {SQ_END_SINGULAR, 0, 0}, S1 = {SQ_END_SINGULAR, 1, 0};
     for (int k = 0; k < 2; k++) {
         double a[2] = {sing[k].x, sing[k].y}, down[2] = {a[0], 0.0};
-        sq_sep_end fe = foot(f, down);
+        sq_sep_end fe = nearest_foot(f, down, down);
         straight(&s[2 * k], a, down, 15, k ? S1 : S0, fe);
         /* towards the arc at 135° (left point) or 45° (right point) */
         double c = k ? cos(M_PI / 4) : cos(3 * M_PI / 4), sn = sin(M_PI / 4);
         double b = a[0] * c + a[1] * sn, t = -b + sqrt(b * b - (a[0] * a[0] + a[1] * a[1] - 1));
         double arc[2] = {a[0] + t * c, a[1] + t * sn};
-        fe = foot(f, arc);
+        fe = nearest_foot(f, arc, arc);
         straight(&s[2 * k + 1], a, arc, 15, k ? S1 : S0, fe);
     }
     double a0[2] = {sing[0].x, sing[0].y}, a1[2] = {sing[1].x, sing[1].y};

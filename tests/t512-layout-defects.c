@@ -2,21 +2,10 @@
  * triangular patch (and the pentagon beside it), a crossing, an open
  * separatrix, a missing separatrix at a singular point. */
 #include "layout.h"
+#include "t51x_layout.h"
 #include "test_util.h"
 
 #include <gsl/gsl_errno.h>
-
-static sq_sep_end foot(const cad_face *f, const double p[2])
-{
-    int best = -1;
-    double bs = 0, bd = HUGE_VAL;
-    for (int e = 0; e < cad_face_num_edges(f); e++) {
-        double s, d;
-        cad_face_edge_project(f, e, p, &s, NULL, &d, NULL);
-        if (d < bd) bd = d, best = e, bs = s;
-    }
-    return (sq_sep_end){SQ_END_BOUNDARY, best, bs};
-}
 
 static void line(sq_separatrix *s, const cad_face *f, double ax, double ay, double bx, double by,
                  int open_end)
@@ -30,8 +19,8 @@ static void line(sq_separatrix *s, const cad_face *f, double ax, double ay, doub
         s->xy[2 * j + 1] = ay + t * (by - ay);
     }
     double a[2] = {ax, ay}, b[2] = {bx, by};
-    s->start = foot(f, a);
-    s->end = open_end ? (sq_sep_end){SQ_END_OPEN, -1, 0} : foot(f, b);
+    s->start = nearest_foot(f, a, NULL);
+    s->end = open_end ? (sq_sep_end){SQ_END_OPEN, -1, 0} : nearest_foot(f, b, NULL);
     s->merged = 0;
 }
 
@@ -91,8 +80,8 @@ int main(void)
             s[0].xy[2 * j + 1] = 0.5 * sin(a);
         }
         double a[2] = {0.5, 0}, b[2] = {0, 0.5};
-        s[0].start = foot(f, a);
-        s[0].end = foot(f, b);
+        s[0].start = nearest_foot(f, a, NULL);
+        s[0].end = nearest_foot(f, b, NULL);
         int want[SQ_DEFECT_NKINDS] = {[SQ_DEFECT_CORNERS] = 2};
         fails += run("triangle", f, &info, 0, NULL, s, 1, want,
                      "1 patch with 3 corners, 1 patch with 5 corners");

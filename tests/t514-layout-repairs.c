@@ -5,21 +5,10 @@
  * a triangular patch split by midpoint division (Marcon §3.4), an annulus
  * cut along the field into quads. */
 #include "layout.h"
+#include "t51x_layout.h"
 #include "test_util.h"
 
 #include <gsl/gsl_errno.h>
-
-static sq_sep_end foot(const cad_face *f, const double p[2])
-{
-    int best = -1;
-    double bs = 0, bd = HUGE_VAL;
-    for (int e = 0; e < cad_face_num_edges(f); e++) {
-        double s, d;
-        cad_face_edge_project(f, e, p, &s, NULL, &d, NULL);
-        if (d < bd) bd = d, best = e, bs = s;
-    }
-    return (sq_sep_end){SQ_END_BOUNDARY, best, bs};
-}
 
 static void line(sq_separatrix *s, const cad_face *f, double ax, double ay, double bx, double by)
 {
@@ -32,8 +21,8 @@ static void line(sq_separatrix *s, const cad_face *f, double ax, double ay, doub
         s->xy[2 * j + 1] = ay + t * (by - ay);
     }
     double a[2] = {ax, ay}, b[2] = {bx, by};
-    s->start = foot(f, a);
-    s->end = foot(f, b);
+    s->start = nearest_foot(f, a, NULL);
+    s->end = nearest_foot(f, b, NULL);
     s->merged = 0;
 }
 
@@ -189,8 +178,8 @@ int main(void)
             s[0].xy[2 * j + 1] = 0.5 * sin(a);
         }
         double a[2] = {0.5, 0}, b[2] = {0, 0.5};
-        s[0].start = foot(qc.f, a);
-        s[0].end = foot(qc.f, b);
+        s[0].start = nearest_foot(qc.f, a, NULL);
+        s[0].end = nearest_foot(qc.f, b, NULL);
         s[0].merged = 0;
         sq_cross_field field = {NULL, polar_dir, radial_size, NULL};
         fails += build("quarter", &qc, 0, NULL, s, 1, &field, &L);
