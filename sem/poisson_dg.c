@@ -509,8 +509,9 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
                 for (int m = 0; m < nm; ++m) S->mom[(size_t)e * nm + m] += wd * S->phiq[(size_t)k * nm + m];
             }
     }
-    if ((st = sem_sparse_factor(S->A, err)) != SQ_OK) goto fail;
+    st = sem_sparse_factor(S->A, err);
 
+fail: /* success falls through: the work arrays go either way */
     free(lq);
     free(lrq);
     free(lsq);
@@ -531,33 +532,13 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
     free(ew);
     sem_tri_quad_free(&q);
     sem_tri_lagrange_free(&lag);
+    if (st != SQ_OK) {
+        dg_free(S);
+        return st;
+    }
     *ops = &dg_ops;
     *state = S;
     return SQ_OK;
-
-fail:
-    free(lq);
-    free(lrq);
-    free(lsq);
-    free(drq);
-    free(dsq);
-    free(B);
-    free(K);
-    free(KT);
-    free(area);
-    free(fa);
-    free(E.ephi);
-    free(E.edr);
-    free(E.eds);
-    free(E.el);
-    free(E.elr);
-    free(E.els);
-    free(et);
-    free(ew);
-    sem_tri_quad_free(&q);
-    sem_tri_lagrange_free(&lag);
-    dg_free(S);
-    return st;
 }
 
 static sq_status dg_solve(void *state, const sem_poisson_data *data, sem_field *u, sq_error *err)
