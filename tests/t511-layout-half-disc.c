@@ -8,21 +8,6 @@
 
 #include <gsl/gsl_errno.h>
 
-static void straight(sq_separatrix *s, const double a[2], const double b[2], int n, sq_sep_end e0,
-                     sq_sep_end e1)
-{
-    s->npts = n;
-    s->xy = malloc(2 * (size_t)n * sizeof *s->xy);
-    for (int j = 0; j < n; j++) {
-        double t = (double)j / (n - 1);
-        s->xy[2 * j] = a[0] + t * (b[0] - a[0]);
-        s->xy[2 * j + 1] = a[1] + t * (b[1] - a[1]);
-    }
-    s->start = e0;
-    s->end = e1;
-    s->merged = 0;
-}
-
 int main(void)
 {
     gsl_set_error_handler_off();

@@ -7,6 +7,7 @@
 
 #include <math.h>
 #include <stddef.h>
+#include <stdlib.h>
 
 /* The boundary end nearest to p: CAD edge and arc length; the foot point
  * itself in snapped (may be NULL). */
@@ -21,6 +22,22 @@ static inline sq_sep_end nearest_foot(const cad_face *f, const double p[2], doub
     }
     if (snapped) snapped[0] = q[0], snapped[1] = q[1]; /* may be p itself */
     return (sq_sep_end){SQ_END_BOUNDARY, best, bs};
+}
+
+/* A straight separatrix of n points from a to b with the given ends. */
+static inline void straight(sq_separatrix *s, const double a[2], const double b[2], int n,
+                            sq_sep_end e0, sq_sep_end e1)
+{
+    s->npts = n;
+    s->xy = malloc(2 * (size_t)n * sizeof *s->xy);
+    for (int j = 0; j < n; j++) {
+        double t = (double)j / (n - 1);
+        s->xy[2 * j] = a[0] + t * (b[0] - a[0]);
+        s->xy[2 * j + 1] = a[1] + t * (b[1] - a[1]);
+    }
+    s->start = e0;
+    s->end = e1;
+    s->merged = 0;
 }
 
 #endif
