@@ -60,6 +60,9 @@ typedef struct {
     int boundary_vertices;
 } sq_quad_quality;
 
+/* eta of the straight quad with counter-clockwise corners c[4]. */
+double sq_quad_corner_eta(const double *const c[4]);
+
 /* Per-quad eta[nquads] and sjac[nquads] (either may be NULL) and the
  * summary. */
 sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,

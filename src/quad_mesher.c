@@ -1,6 +1,7 @@
 #include "quad_mesher.h"
 
 #include "gauss.h"
+#include "quad_relax.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -475,6 +476,43 @@ static sq_status smooth(const cad_face *face, const sq_face_info *info, vmesh *v
     return st;
 }
 
+/* Design 3b: the whole vertex mesh relaxed towards an orthogonal map
+ * (quad_relax.h); what stays: singular points (interior vertices of valence
+ * other than 4), the face's corners and the boundary layers. */
+static sq_status relax(const cad_face *face, const sq_face_info *info, vmesh *v, const int *keep,
+                       int move_singular, sq_error *err)
+{
+    int *deg = calloc((size_t)v->nv + 1, sizeof(int)), *bnd = calloc((size_t)v->nv + 1, sizeof(int));
+    int *fixed = calloc((size_t)v->nv + 1, sizeof(int));
+    if (!deg || !bnd || !fixed) {
+        free(deg);
+        free(bnd);
+        free(fixed);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    for (int q = 0; q < v->nq; q++)
+        for (int k = 0; k < 4; k++) {
+            deg[v->quad[4 * q + k]]++;
+            if (v->side_tag[4 * q + k] >= 0)
+                bnd[v->quad[4 * q + k]] = bnd[v->quad[4 * q + (k + 1) % 4]] = 1;
+        }
+    double scale = hypot(info->bbox[2] - info->bbox[0], info->bbox[3] - info->bbox[1]);
+    for (int i = 0; i < v->nv; i++) {
+        fixed[i] = (keep && keep[i]) || (!bnd[i] && deg[i] != 4 && !move_singular);
+        /* a corner of the face, even inside one closed edge (a trailing edge) */
+        for (int c = 0; c < info->nvertices && bnd[i] && !fixed[i]; c++)
+            fixed[i] = !info->vertices[c].smooth &&
+                       hypot(info->vertices[c].x - v->xy[2 * i], info->vertices[c].y - v->xy[2 * i + 1]) <
+                           1e-9 * scale;
+    }
+    sq_relax_mesh rm = {v->nv, v->nq, v->xy, v->quad, v->side_tag, fixed};
+    sq_status st = sq_quad_relax(face, &rm, err);
+    free(deg);
+    free(bnd);
+    free(fixed);
+    return st;
+}
+
 /* Glue the patch grids into the vertex mesh. */
 static sq_status build_vmesh(const sq_layout *L, patch_grid *grids, long nids, vmesh *v,
                              sq_error *err)
@@ -885,9 +923,25 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
             }
     }
     if (st == SQ_OK) st = smooth(face, info, &v, keep, err);
+    /* relaxed with the singular points free to even out their angles, then
+     * held where the field put them, then not relaxed at all: the first of
+     * these whose curved quads all have a positive Jacobian */
+    double *smoothed = st == SQ_OK ? malloc(sizeof(double) * 2 * ((size_t)v.nv + 1)) : NULL;
+    if (st == SQ_OK && !smoothed) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) memcpy(smoothed, v.xy, sizeof(double) * 2 * (size_t)v.nv);
+    for (int attempt = 0; attempt < 3 && st == SQ_OK; attempt++) {
+        sq_quad_mesh_free(out);
+        memcpy(v.xy, smoothed, sizeof(double) * 2 * (size_t)v.nv);
+        if (attempt < 2) st = relax(face, info, &v, keep, attempt == 0, err);
+        if (st == SQ_OK && opt->nbl > 0) st = bl_march(face, opt, &v, err);
+        if (st == SQ_OK) st = raise_order(face, &v, Q, opt->nodes, opt, out, err);
+        sq_quad_quality qq;
+        if (st == SQ_OK) st = sq_quad_mesh_quality(*out, NULL, NULL, &qq, err);
+        if (st == SQ_OK && qq.inverted == 0) break;
+    }
+    if (st != SQ_OK) sq_quad_mesh_free(out);
+    free(smoothed);
     free(keep);
-    if (st == SQ_OK && opt->nbl > 0) st = bl_march(face, opt, &v, err);
-    if (st == SQ_OK) st = raise_order(face, &v, Q, opt->nodes, opt, out, err);
     vmesh_free(&v);
     free(grade);
     for (int q = 0; grids && q < L->npatches; q++) patch_grid_free(&grids[q]);

@@ -12,9 +12,14 @@
  *     curve for boundary edges: the patches sharing an edge share its nodes,
  *     so the mesh is conforming by construction;
  *  3. each patch is filled by discrete transfinite interpolation of its four
- *     sides (blending parameters from the sides' arc-length fractions), then
- *     the interior nodes are smoothed (Winslow, Marcon §3.4's suggestion) if
- *     an element has a non-positive Jacobian;
+ *     sides (blending parameters from the sides' arc-length fractions); the
+ *     glued vertex mesh is Laplace-smoothed (untangling), then relaxed to
+ *     the minimum of Winslow's energy with the boundary vertices sliding on
+ *     their curves (quad_relax.h, Marcon §3.4's suggestion): grid lines
+ *     cross at right angles and meet the boundary orthogonally.  Singular
+ *     points may move in that relaxation to even out their angles; if a
+ *     curved quad then has a non-positive Jacobian they are held, and
+ *     failing that the relaxation is skipped;
  *  4. quads of order Q take their (Q+1)^2 nodes from that grid. */
 #ifndef SQ_QUAD_MESHER_H
 #define SQ_QUAD_MESHER_H

@@ -39,6 +39,16 @@ static double eta_of(const double ang[4])
     return 1.0 - worst / 90.0;
 }
 
+double sq_quad_corner_eta(const double *const c[4])
+{
+    double ang[4];
+    for (int k = 0; k < 4; k++) {
+        const double *p = c[k], *a = c[(k + 1) % 4], *b = c[(k + 3) % 4];
+        ang[k] = corner_angle(a[0] - p[0], a[1] - p[1], b[0] - p[0], b[1] - p[1], 1.0);
+    }
+    return eta_of(ang);
+}
+
 static const int CORNER[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
 static const double *corner_xy(const sq_quad_mesh *m, int q, int k)

@@ -1,0 +1,386 @@
+#include "quad_relax.h"
+
+#include "quad_mesh.h"
+#include "sparse.h"
+
+#include <lapacke.h>
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define MAX_NEWTON 60
+#define MAX_HALVINGS 30
+#define WORST_ETA 0.55
+#define WORST_SWEEPS 50
+#define MIN_TAPER 0.3
+
+/* How each vertex moves. */
+typedef struct {
+    int *dof;    /* nv: first unknown, -1 when fixed */
+    int *edge;   /* nv: CAD edge a sliding vertex moves on, else -1 */
+    double *s;   /* nv: arc length of a sliding vertex */
+    double *len; /* nv: length of that edge, negative when the edge is open */
+    double *tan; /* 2*nv: unit tangent of a sliding vertex */
+    int ndof;
+    int *start; /* nv+1: CSR of the quads around each vertex */
+    int *around;
+} relax_work;
+
+static void work_free(relax_work *w)
+{
+    free(w->dof);
+    free(w->edge);
+    free(w->s);
+    free(w->len);
+    free(w->tan);
+    free(w->start);
+    free(w->around);
+}
+
+/* Which vertices move and how: interior free vertices in the plane (two
+ * unknowns), boundary vertices whose two boundary sides lie on one CAD edge
+ * along it (one unknown, the arc length); every other vertex is fixed. */
+static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_work *w, sq_error *err)
+{
+    int *nb = calloc((size_t)m->nv + 1, sizeof(int));
+    w->dof = malloc(sizeof(int) * ((size_t)m->nv + 1));
+    w->edge = malloc(sizeof(int) * ((size_t)m->nv + 1));
+    w->s = calloc((size_t)m->nv + 1, sizeof(double));
+    w->len = calloc((size_t)m->nv + 1, sizeof(double));
+    w->tan = calloc(2 * (size_t)m->nv + 1, sizeof(double));
+    w->start = calloc((size_t)m->nv + 2, sizeof(int));
+    w->around = malloc(sizeof(int) * (4 * (size_t)m->nq + 1));
+    if (!nb || !w->dof || !w->edge || !w->s || !w->len || !w->tan || !w->start || !w->around) {
+        free(nb);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    for (int i = 0; i < m->nv; i++)
+        w->edge[i] = -1;
+    for (int q = 0; q < m->nq; q++)
+        for (int k = 0; k < 4; k++)
+            w->start[m->quad[4 * q + k] + 2]++;
+    for (int i = 0; i < m->nv; i++)
+        w->start[i + 2] += w->start[i + 1];
+    for (int q = 0; q < m->nq; q++)
+        for (int k = 0; k < 4; k++)
+            w->around[w->start[m->quad[4 * q + k] + 1]++] = q;
+    for (int q = 0; q < m->nq; q++)
+        for (int k = 0; k < 4; k++) {
+            int t = m->side_tag[4 * q + k];
+            if (t < 0) continue;
+            for (int e = 0; e < 2; e++) {
+                int a = m->quad[4 * q + (k + e) % 4];
+                /* -2 once the vertex joins two different CAD edges */
+                w->edge[a] = nb[a]++ == 0 || w->edge[a] == t ? t : -2;
+            }
+        }
+    sq_status st = SQ_OK;
+    w->ndof = 0;
+    for (int i = 0; i < m->nv && st == SQ_OK; i++) {
+        w->dof[i] = -1;
+        if (m->fixed[i] || (nb[i] != 0 && (nb[i] != 2 || w->edge[i] < 0))) {
+            w->edge[i] = -1;
+            continue;
+        }
+        w->dof[i] = w->ndof;
+        w->ndof += nb[i] == 0 ? 2 : 1;
+        if (nb[i] == 0) continue;
+        double a[2], b[2], L = cad_face_edge_length(face, w->edge[i]);
+        st = cad_face_edge_project(face, w->edge[i], &m->xy[2 * i], &w->s[i], NULL, NULL, err);
+        if (st == SQ_OK) st = cad_face_edge_eval(face, w->edge[i], 0.0, a, NULL, NULL, err);
+        if (st == SQ_OK) st = cad_face_edge_eval(face, w->edge[i], L, b, NULL, NULL, err);
+        w->len[i] = hypot(a[0] - b[0], a[1] - b[1]) < 1e-9 * L ? L : -L;
+    }
+    free(nb);
+    return st;
+}
+
+/* The point of sliding vertex i's edge at arc length s (wrapped on a
+ * closed edge, clamped on an open one) and the tangent there. */
+static sq_status on_edge(const cad_face *face, const relax_work *w, int i, double *s, double x[2],
+                         double t[2], sq_error *err)
+{
+    double L = fabs(w->len[i]);
+    if (w->len[i] > 0.0)
+        *s -= L * floor(*s / L);
+    else
+        *s = fmin(fmax(*s, 0.0), L);
+    return cad_face_edge_eval(face, w->edge[i], *s, x, t, NULL, err);
+}
+
+/* Corner k of quad q: its vertex c and the next (a) and previous (b). */
+static void corner_vertices(const sq_relax_mesh *m, int q, int k, int v[3])
+{
+    v[0] = m->quad[4 * q + k];
+    v[1] = m->quad[4 * q + (k + 1) % 4];
+    v[2] = m->quad[4 * q + (k + 3) % 4];
+}
+
+/* Winslow energy of one corner with edges e = (a - c, b - c):
+ * f = (|e1|^2 + |e2|^2) / (e1 x e2), the discrete |J|_F^2 / det J of the map
+ * from the unit square, which is the Dirichlet energy of the inverse map
+ * (Winslow 1966); +inf when the corner is not convex. */
+static double corner_energy(const double e[4])
+{
+    double D = e[0] * e[3] - e[1] * e[2];
+    return D > 0.0 ? (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3]) / D : HUGE_VAL;
+}
+
+static double energy(const sq_relax_mesh *m)
+{
+    double E = 0.0;
+    for (int q = 0; q < m->nq && E < HUGE_VAL; q++)
+        for (int k = 0; k < 4; k++) {
+            int v[3];
+            corner_vertices(m, q, k, v);
+            const double *c = &m->xy[2 * v[0]], *a = &m->xy[2 * v[1]], *b = &m->xy[2 * v[2]];
+            double e[4] = {a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1]};
+            E += corner_energy(e);
+        }
+    return E;
+}
+
+/* Gradient g[4] and Hessian H[16] of corner_energy in e, the Hessian made
+ * positive semi-definite by clamping its eigenvalues (projected Newton). */
+static void corner_derivatives(const double e[4], double g[4], double H[16])
+{
+    double N = e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3];
+    double D = e[0] * e[3] - e[1] * e[2];
+    double gN[4] = {2 * e[0], 2 * e[1], 2 * e[2], 2 * e[3]}, gD[4] = {e[3], -e[2], -e[1], e[0]};
+    /* the constant Hessian of D */
+    static const double HD[16] = {0, 0, 0, 1, 0, 0, -1, 0, 0, -1, 0, 0, 1, 0, 0, 0};
+    for (int i = 0; i < 4; i++) {
+        g[i] = (gN[i] * D - N * gD[i]) / (D * D);
+        for (int j = 0; j < 4; j++)
+            H[4 * i + j] = (i == j ? 2.0 / D : 0.0) - (gN[i] * gD[j] + gD[i] * gN[j]) / (D * D) -
+                           N * HD[4 * i + j] / (D * D) + 2.0 * N * gD[i] * gD[j] / (D * D * D);
+    }
+    double lam[4], V[16];
+    memcpy(V, H, sizeof V);
+    if (LAPACKE_dsyev(LAPACK_ROW_MAJOR, 'V', 'U', 4, V, 4, lam) != 0) {
+        memset(H, 0, sizeof(double) * 16);
+        return;
+    }
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++) {
+            H[4 * i + j] = 0.0;
+            for (int k = 0; k < 4; k++)
+                H[4 * i + j] += V[4 * i + k] * fmax(lam[k], 0.0) * V[4 * j + k];
+        }
+}
+
+/* d e / d z_p for vertex p in role r (0: c, 1: a, 2: b): a 4 x n matrix. */
+static int vertex_jacobian(const relax_work *w, int p, int role, double J[4][2])
+{
+    if (w->dof[p] < 0) return 0;
+    double T[2][2] = {{1.0, 0.0}, {0.0, 1.0}};
+    int n = 2;
+    if (w->edge[p] >= 0) {
+        T[0][0] = w->tan[2 * p];
+        T[1][0] = w->tan[2 * p + 1];
+        n = 1;
+    }
+    /* e1 = a - c, e2 = b - c */
+    double s1 = role == 0   ? -1.0
+                : role == 1 ? 1.0
+                            : 0.0,
+           s2 = role == 0   ? -1.0
+                : role == 2 ? 1.0
+                            : 0.0;
+    for (int j = 0; j < n; j++) {
+        J[0][j] = s1 * T[0][j];
+        J[1][j] = s1 * T[1][j];
+        J[2][j] = s2 * T[0][j];
+        J[3][j] = s2 * T[1][j];
+    }
+    return n;
+}
+
+/* The Newton direction d: (H + shift) d = -g, H the sum of the corners'
+ * projected Hessians. */
+static sq_status newton_direction(const sq_relax_mesh *m, const relax_work *w, double *d,
+                                  sq_error *err)
+{
+    double *g = calloc((size_t)w->ndof + 1, sizeof(double)),
+           *diag = calloc((size_t)w->ndof + 1, sizeof(double));
+    sem_sparse *A = NULL;
+    sq_status st = g && diag ? sem_sparse_create(w->ndof, 36L * 4 * m->nq, &A, err)
+                             : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int q = 0; q < m->nq && st == SQ_OK; q++)
+        for (int k = 0; k < 4 && st == SQ_OK; k++) {
+            int v[3];
+            corner_vertices(m, q, k, v);
+            const double *c = &m->xy[2 * v[0]], *a = &m->xy[2 * v[1]], *b = &m->xy[2 * v[2]];
+            double e[4] = {a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1]}, ge[4], He[16];
+            corner_derivatives(e, ge, He);
+            double J[3][4][2];
+            int n[3];
+            for (int r = 0; r < 3; r++)
+                n[r] = vertex_jacobian(w, v[r], r, J[r]);
+            for (int r = 0; r < 3; r++)
+                for (int i = 0; i < n[r]; i++) {
+                    int row = w->dof[v[r]] + i;
+                    for (int x = 0; x < 4; x++)
+                        g[row] += J[r][x][i] * ge[x];
+                    for (int t = 0; t < 3 && st == SQ_OK; t++)
+                        for (int j = 0; j < n[t] && st == SQ_OK; j++) {
+                            int col = w->dof[v[t]] + j;
+                            if (row < col) continue; /* the lower triangle */
+                            double h = 0.0;
+                            for (int x = 0; x < 4; x++)
+                                for (int y = 0; y < 4; y++)
+                                    h += J[r][x][i] * He[4 * x + y] * J[t][y][j];
+                            if (row == col) diag[row] += h;
+                            st = sem_sparse_add(A, row, col, h, err);
+                        }
+                }
+        }
+    /* a small shift keeps the system definite where a projected Hessian
+     * lost rank */
+    for (int i = 0; i < w->ndof && st == SQ_OK; i++)
+        st = sem_sparse_add(A, i, i, 1e-8 * diag[i] + 1e-300, err);
+    if (st == SQ_OK) st = sem_sparse_factor(A, err);
+    for (int i = 0; i < w->ndof; i++)
+        g[i] = -g[i];
+    if (st == SQ_OK) st = sem_sparse_solve(A, g, d, err);
+    sem_sparse_free(&A);
+    free(g);
+    free(diag);
+    return st;
+}
+
+/* Vertices at p + t d (sliding ones along their curve from s0). */
+static sq_status place(const cad_face *face, const sq_relax_mesh *m, relax_work *w, const double *p,
+                       const double *s0, const double *d, double t, sq_error *err)
+{
+    for (int i = 0; i < m->nv; i++) {
+        int k = w->dof[i];
+        if (k < 0) continue;
+        if (w->edge[i] >= 0) {
+            w->s[i] = s0[i] + t * d[k];
+            SQ_TRY(on_edge(face, w, i, &w->s[i], &m->xy[2 * i], NULL, err));
+        } else {
+            m->xy[2 * i] = p[2 * i] + t * d[k];
+            m->xy[2 * i + 1] = p[2 * i + 1] + t * d[k + 1];
+        }
+    }
+    return SQ_OK;
+}
+
+/* The worst eta of the quads around vertex i — 0 for a quad that is not
+ * convex or whose corner Jacobians' ratio is below MIN_TAPER (a move that
+ * keeps the angles may still shrink a side) — and the shortest of their
+ * sides. */
+static double around_eta(const sq_relax_mesh *m, const relax_work *w, int i, double *shortest)
+{
+    double worst = 1.0;
+    *shortest = HUGE_VAL;
+    for (int t = w->start[i]; t < w->start[i + 1]; t++) {
+        const int *q = &m->quad[4 * w->around[t]];
+        const double *c[4];
+        for (int k = 0; k < 4; k++)
+            c[k] = &m->xy[2 * q[k]];
+        for (int k = 0; k < 4; k++)
+            *shortest =
+                fmin(*shortest, hypot(c[k][0] - c[(k + 1) % 4][0], c[k][1] - c[(k + 1) % 4][1]));
+        double dmin = HUGE_VAL, dmax = 0.0;
+        for (int k = 0; k < 4; k++) {
+            const double *p = c[k], *a = c[(k + 1) % 4], *b = c[(k + 3) % 4];
+            double det = (a[0] - p[0]) * (b[1] - p[1]) - (a[1] - p[1]) * (b[0] - p[0]);
+            dmin = fmin(dmin, det);
+            dmax = fmax(dmax, det);
+        }
+        double eta = dmin / dmax < MIN_TAPER ? 0.0 : sq_quad_corner_eta(c);
+        worst = fmin(worst, fmax(eta, 0.0));
+    }
+    return worst;
+}
+
+/* Where the energy's optimum still leaves a poor quad (a corner that the
+ * layout forces to an awkward angle pulls its neighbours along), raise the
+ * worst eta around each of its vertices by a compass search: each move
+ * must improve the minimum over the quads it touches. */
+static sq_status raise_worst(const cad_face *face, const sq_relax_mesh *m, relax_work *w,
+                             sq_error *err)
+{
+    static const double DIR[8][2] = {{1, 0},  {0.7071, 0.7071},   {0, 1},  {-0.7071, 0.7071},
+                                     {-1, 0}, {-0.7071, -0.7071}, {0, -1}, {0.7071, -0.7071}};
+    for (int sweep = 0; sweep < WORST_SWEEPS; sweep++) {
+        int moved = 0;
+        for (int i = 0; i < m->nv; i++) {
+            if (w->dof[i] < 0) continue;
+            double len, eta = around_eta(m, w, i, &len);
+            if (eta >= WORST_ETA) continue;
+            double *x = &m->xy[2 * i], x0[2] = {x[0], x[1]}, s0 = w->s[i];
+            for (double h = 0.25 * len; h > len / 256.0; h *= 0.5) {
+                double best = eta, bx[2] = {x0[0], x0[1]}, bs = s0, l;
+                int ndir = w->edge[i] >= 0 ? 2 : 8;
+                for (int k = 0; k < ndir; k++) {
+                    if (w->edge[i] >= 0) {
+                        w->s[i] = s0 + (k ? -h : h);
+                        SQ_TRY(on_edge(face, w, i, &w->s[i], x, NULL, err));
+                    } else {
+                        x[0] = x0[0] + h * DIR[k][0];
+                        x[1] = x0[1] + h * DIR[k][1];
+                    }
+                    double e = around_eta(m, w, i, &l);
+                    if (e > best + 1e-12) {
+                        best = e;
+                        bx[0] = x[0], bx[1] = x[1], bs = w->s[i];
+                    }
+                }
+                x[0] = bx[0], x[1] = bx[1], w->s[i] = bs;
+                if (best > eta) {
+                    moved = 1;
+                    break;
+                }
+            }
+        }
+        if (!moved) break;
+    }
+    return SQ_OK;
+}
+
+sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
+{
+    relax_work w = {0};
+    sq_status st = prepare(face, m, &w, err);
+    double *d = NULL, *p = NULL, *s0 = NULL;
+    if (st == SQ_OK) {
+        d = malloc(sizeof(double) * ((size_t)w.ndof + 1));
+        p = malloc(sizeof(double) * 2 * ((size_t)m->nv + 1));
+        s0 = malloc(sizeof(double) * ((size_t)m->nv + 1));
+        if (!d || !p || !s0) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    /* a mesh with a non-convex corner is left to the caller's untangling */
+    double E = st == SQ_OK ? energy(m) : HUGE_VAL;
+    for (int it = 0; it < MAX_NEWTON && st == SQ_OK && w.ndof > 0 && E < HUGE_VAL; it++) {
+        for (int i = 0; i < m->nv && st == SQ_OK; i++)
+            if (w.dof[i] >= 0 && w.edge[i] >= 0)
+                st = on_edge(face, &w, i, &w.s[i], &m->xy[2 * i], &w.tan[2 * i], err);
+        if (st == SQ_OK) st = newton_direction(m, &w, d, err);
+        if (st != SQ_OK) break;
+        memcpy(p, m->xy, sizeof(double) * 2 * (size_t)m->nv);
+        memcpy(s0, w.s, sizeof(double) * (size_t)m->nv);
+        double t = 1.0, E1 = HUGE_VAL;
+        int h = 0;
+        for (; h < MAX_HALVINGS && st == SQ_OK; h++, t *= 0.5) {
+            st = place(face, m, &w, p, s0, d, t, err);
+            if (st == SQ_OK && (E1 = energy(m)) < E) break;
+        }
+        if (st != SQ_OK || h == MAX_HALVINGS) { /* no decrease left: converged */
+            memcpy(m->xy, p, sizeof(double) * 2 * (size_t)m->nv);
+            memcpy(w.s, s0, sizeof(double) * (size_t)m->nv);
+            break;
+        }
+        int done = E - E1 < 1e-13 * E;
+        E = E1;
+        if (done) break;
+    }
+    if (st == SQ_OK) st = raise_worst(face, m, &w, err);
+    free(d);
+    free(p);
+    free(s0);
+    work_free(&w);
+    return st;
+}

@@ -1,0 +1,37 @@
+/* semquad — global relaxation of a quad mesh's vertices towards an
+ * orthogonal (conformal up to a stretch) map.
+ *
+ * The vertices minimize the discrete Dirichlet energy of the map from the
+ * mesh's parameter space (every quad a unit square) to the plane,
+ * E = 1/2 sum over quad sides |x_a - x_b|^2, with the vertices on the face
+ * boundary free to slide along their CAD curve.  Among maps of a patch onto
+ * itself with its corners fixed, the minimizer is a conformal map followed
+ * by an affine stretch (the patch's conformal modulus against its chord
+ * counts), so grid lines cross at right angles away from the corners and
+ * meet the boundary orthogonally — the natural boundary condition of the
+ * sliding vertices.  Gauss–Newton: each step solves the quadratic energy
+ * with boundary vertices moving along their tangent (one sparse SPD solve,
+ * CHOLMOD), then projects them back onto the curve.
+ *
+ * The caller fixes what must not move (singular points, face corners,
+ * boundary-layer vertices); a boundary vertex slides only when both of its
+ * boundary sides lie on one CAD edge.  A step that would make a quad
+ * non-convex at a corner is shortened until none does, so a valid mesh
+ * stays valid. */
+#ifndef SQ_QUAD_RELAX_H
+#define SQ_QUAD_RELAX_H
+
+#include "cad.h"
+#include "sq_status.h"
+
+typedef struct {
+    int nv, nq;
+    double *xy;          /* 2*nv, updated in place */
+    const int *quad;     /* 4*nq corner vertices, counter-clockwise */
+    const int *side_tag; /* 4*nq: CAD edge under side k (vertex k to k+1), or -1 */
+    const int *fixed;    /* nv: 1 = does not move */
+} sq_relax_mesh;
+
+sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err);
+
+#endif
