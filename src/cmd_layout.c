@@ -65,11 +65,11 @@ sq_status sq_cmd_layout(int argc, char **argv, sq_error *err)
     if (st == SQ_OK && out == SQ_OK && !args.quiet) {
         const sq_layout_stats *s = &r.layout.stats;
         printf("%s face %d: %d singular points, %d separatrices, %d quad patches; repairs: %d "
-               "limit cycles, %d T-junctions, %d triangles, %d annuli, %d duplicates, %d "
-               "crossings\n",
+               "limit cycles, %d T-junctions, %d triangles, %d valence-2 points, %d annuli, %d "
+               "duplicates, %d crossings\n",
                args.input, args.face, r.nsing, s->separatrices, s->quad_patches,
-               s->limit_cycles_cut, s->t_junctions, s->triangles_repaired, s->annuli_cut,
-               s->duplicates_removed, s->crossings_split);
+               s->limit_cycles_cut, s->t_junctions, s->triangles_repaired, s->valence2_split,
+               s->annuli_cut, s->duplicates_removed, s->crossings_split);
     }
     if (st == SQ_OK) st = out;
     if (st == SQ_OK || st == SQ_ERR_LAYOUT) sq_layout_result_free(&r);

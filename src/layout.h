@@ -30,14 +30,20 @@
  *     cut separatrix across along the field (Heun steps, §6.1) to the
  *     boundary or the next separatrix (§6.3, Fig. 17); near-orthogonal
  *     crossings of two separatrices become regular valence-4 nodes (both
- *     split there); triangular patches split by midpoint division (Marcon
- *     §3.4, Fig. 13: a valence-3 node at the patch centroid joined to the
- *     midpoints of the three sides; a midpoint on a separatrix is a
- *     T-junction for the neighbouring patch, repaired in turn — this covers
- *     Jezdimirović's valence-2 boundary point, Fig. 18, whose triangle is
- *     split the same way); annular patches (no corner on any cycle) cut
- *     along field lines from the outer loop to the inner one, at points
- *     where the field is best aligned with the inward normal.
+ *     split there); a triangular patch with a boundary valence-2 point on
+ *     a side (a face vertex taking one quad where the boundary is within
+ *     SQ_LAYOUT_CORNER_TOL_DEG of straight: a quad in topology, a triangle
+ *     in geometry) split as Jezdimirović §6.3, Fig. 18: the point becomes
+ *     two valence-3 points, a node imposed at the patch's barycentre joined
+ *     to the point (now a regular boundary point of two quads) and to the
+ *     midpoints of the two other sides; other triangular patches split by
+ *     midpoint division (Marcon §3.4, Fig. 13: a valence-3 node at the
+ *     patch centroid joined to the midpoints of the three sides; a
+ *     valence-0 corner then takes one quad).  A spoke's end on a separatrix
+ *     is a T-junction for the neighbouring patch, repaired in turn.
+ *     Annular patches (no corner on any cycle) cut along field lines from
+ *     the outer loop to the inner one, at points where the field is best
+ *     aligned with the inward normal.
  *
  * All coordinates are in the face's 2D frame (cad.h). */
 #ifndef SQ_LAYOUT_H
@@ -111,13 +117,18 @@ typedef enum {
     SQ_LROLE_INPUT = 0,  /* given by the caller */
     SQ_LROLE_CROSSING,   /* two separatrices crossing (regular, valence 4) */
     SQ_LROLE_TJUNCTION,  /* end of a cut separatrix on another (to repair) */
-    SQ_LROLE_MIDPOINT    /* midpoint division (Marcon §3.4), valence 3 */
+    SQ_LROLE_MIDPOINT,   /* midpoint division (Marcon §3.4), valence 3 */
+    SQ_LROLE_VALENCE2    /* barycentre node of a boundary valence-2 split
+                            (Jezdimirović §6.3), valence 3 */
 } sq_lrole;
 
 typedef struct {
     int separatrices, patches, quad_patches;
     int t_junctions, limit_cycles_cut, triangles_repaired, annuli_cut, duplicates_removed;
     int crossings_split; /* near-orthogonal crossings made regular nodes */
+    int valence2_split;  /* boundary valence-2 points split (Jezdimirović
+                            Fig. 18); triangles_repaired counts the midpoint
+                            divisions only */
     int iterations;      /* correction passes */
 } sq_layout_stats;
 
@@ -128,7 +139,8 @@ typedef struct {
     sq_lrole *role;       /* per singular point */
     int nvertices;
     int *vertex_quads;    /* n per face vertex (0 set to 1 once its triangle
-                             is repaired) */
+                             is repaired, 1 to 2 once a valence-2 point is
+                             split) */
     sq_separatrix_set seps;
     /* the planar graph */
     int nnodes;

@@ -583,6 +583,78 @@ static void chain_mid(const sq_layout *L, const sq_layout_patch *P, int a, int b
     }
 }
 
+/* Area centroid of the patch's outer cycle (Green's theorem on its
+ * polylines); 0 if the cycle has no area. */
+static int patch_centroid(const sq_layout *L, const sq_layout_patch *P, double cen[2])
+{
+    int end = P->ncycles > 0 ? P->cycle_start[1] : P->nhalf;
+    double A = 0.0, cx = 0.0, cy = 0.0;
+    for (int k = 0; k < end; k++) {
+        const sq_layout_edge *E = &L->edges[P->half[k].edge];
+        for (int j = 0; j + 1 < E->npts; j++) {
+            int j0 = P->half[k].reversed ? E->npts - 1 - j : j;
+            int j1 = P->half[k].reversed ? j0 - 1 : j0 + 1;
+            const double *u = &E->xy[2 * j0], *v = &E->xy[2 * j1];
+            double c = u[0] * v[1] - v[0] * u[1];
+            A += c;
+            cx += (u[0] + v[0]) * c;
+            cy += (u[1] + v[1]) * c;
+        }
+    }
+    if (!(fabs(A) > 0)) return 0;
+    cen[0] = cx / (3.0 * A);
+    cen[1] = cy / (3.0 * A);
+    return 1;
+}
+
+/* Arc-length midpoint of side k of patch P (corner k to corner k+1): the
+ * edge, the fraction along it and the point. */
+static sq_status side_mid(rctx *r, const sq_layout_patch *P, int k, int *edge, double *frac,
+                          double xy[2], sq_error *err)
+{
+    int a = P->corner_half[k], b = P->corner_half[(k + 1) % P->ncorners];
+    if (b <= a) b += P->nhalf;
+    chain_mid(r->L, P, a, b, edge, frac);
+    return sq_layout_edge_point(r->L, r->face, *edge, *frac, xy, err);
+}
+
+/* Straight separatrix from inserted node M (at a) to b, ending in `end`. */
+static sq_status straight_sep(sq_layout *L, int M, const double a[2], const double b[2],
+                              sq_sep_end end, sq_error *err)
+{
+    enum { NP = 17 };
+    double xy[2 * NP];
+    for (int j = 0; j < NP; j++) {
+        double t = (double)j / (NP - 1);
+        xy[2 * j] = a[0] + t * (b[0] - a[0]);
+        xy[2 * j + 1] = a[1] + t * (b[1] - a[1]);
+    }
+    return lay_sep_push(&L->seps, xy, NP, (sq_sep_end){SQ_END_SINGULAR, M, 0.0}, end, err);
+}
+
+/* A straight spoke from inserted node M (at cen) to point p on layout edge
+ * `edge` at fraction frac: on the boundary it ends in a foot, on a
+ * separatrix in a new T-junction, repaired next (the "patches influenced"
+ * of Jezdimirović §6.3). */
+static sq_status add_spoke(rctx *r, int M, const double cen[2], int edge, double frac,
+                           const double p[2], sq_error *err)
+{
+    sq_layout *L = r->L;
+    const sq_layout_edge *E = &L->edges[edge];
+    sq_sep_end end;
+    if (E->cad_edge >= 0) {
+        end = (sq_sep_end){SQ_END_BOUNDARY, E->cad_edge, E->s0 + frac * (E->s1 - E->s0)};
+    } else {
+        int sep = E->sep;
+        double q[2] = {p[0], p[1]};
+        SQ_TRY(lay_sing_push(L, q[0], q[1], 3, SQ_LROLE_TJUNCTION, err));
+        end = (sq_sep_end){SQ_END_SINGULAR, L->nsing - 1, 0.0};
+        double pos = nearest_pos(&L->seps.s[sep], q, NULL);
+        SQ_TRY(split_sep(L, sep, pos, q, L->nsing - 1, err));
+    }
+    return straight_sep(L, M, cen, p, end, err);
+}
+
 /* Triangular patch: midpoint division (Marcon §3.4, Fig. 13): a valence-3
  * node at the centroid, straight spokes to the three side midpoints; a
  * midpoint on a separatrix is a T-junction repaired next. */
@@ -592,61 +664,17 @@ static sq_status split_triangle(rctx *r, int *done, sq_error *err)
     for (int p = 0; p < L->npatches && !*done; p++) {
         const sq_layout_patch *P = &L->patches[p];
         if (P->ncorners != 3 || P->ncycles != 1) continue;
-        /* sides between consecutive corners (corner_half increasing, cyclic) */
-        double mid[3][2], cen[2] = {0, 0};
+        double mid[3][2], cen[2];
         int medge[3];
         double mfrac[3];
-        for (int k = 0; k < 3; k++) {
-            int a = P->corner_half[k], b = P->corner_half[(k + 1) % 3];
-            if (b <= a) b += P->nhalf;
-            chain_mid(L, P, a, b, &medge[k], &mfrac[k]);
-            SQ_TRY(sq_layout_edge_point(L, r->face, medge[k], mfrac[k], mid[k], err));
-        }
-        /* centroid of the patch polygon (Green), else the midpoints' mean */
-        double A = 0.0, cx = 0.0, cy = 0.0;
-        for (int k = 0; k < P->nhalf; k++) {
-            const sq_layout_edge *E = &L->edges[P->half[k].edge];
-            for (int j = 0; j + 1 < E->npts; j++) {
-                int j0 = P->half[k].reversed ? E->npts - 1 - j : j;
-                int j1 = P->half[k].reversed ? j0 - 1 : j0 + 1;
-                const double *u = &E->xy[2 * j0], *v = &E->xy[2 * j1];
-                double c = u[0] * v[1] - v[0] * u[1];
-                A += c;
-                cx += (u[0] + v[0]) * c;
-                cy += (u[1] + v[1]) * c;
-            }
-        }
-        if (fabs(A) > 0) {
-            cen[0] = cx / (3.0 * A);
-            cen[1] = cy / (3.0 * A);
-        } else {
+        for (int k = 0; k < 3; k++) SQ_TRY(side_mid(r, P, k, &medge[k], &mfrac[k], mid[k], err));
+        if (!patch_centroid(L, P, cen)) {
             cen[0] = (mid[0][0] + mid[1][0] + mid[2][0]) / 3.0;
             cen[1] = (mid[0][1] + mid[1][1] + mid[2][1]) / 3.0;
         }
         SQ_TRY(lay_sing_push(L, cen[0], cen[1], 3, SQ_LROLE_MIDPOINT, err));
         int M = L->nsing - 1;
-        for (int k = 0; k < 3; k++) {
-            const sq_layout_edge *E = &L->edges[medge[k]];
-            sq_sep_end end;
-            if (E->cad_edge >= 0) {
-                end = (sq_sep_end){SQ_END_BOUNDARY, E->cad_edge,
-                                   E->s0 + mfrac[k] * (E->s1 - E->s0)};
-            } else {
-                SQ_TRY(lay_sing_push(L, mid[k][0], mid[k][1], 3, SQ_LROLE_TJUNCTION, err));
-                end = (sq_sep_end){SQ_END_SINGULAR, L->nsing - 1, 0.0};
-                double pos = nearest_pos(&L->seps.s[E->sep], mid[k], NULL);
-                SQ_TRY(split_sep(L, E->sep, pos, mid[k], L->nsing - 1, err));
-            }
-            enum { NP = 17 };
-            double xy[2 * NP];
-            for (int j = 0; j < NP; j++) {
-                double t = (double)j / (NP - 1);
-                xy[2 * j] = cen[0] + t * (mid[k][0] - cen[0]);
-                xy[2 * j + 1] = cen[1] + t * (mid[k][1] - cen[1]);
-            }
-            SQ_TRY(lay_sep_push(&L->seps, xy, NP, (sq_sep_end){SQ_END_SINGULAR, M, 0.0}, end,
-                                err));
-        }
+        for (int k = 0; k < 3; k++) SQ_TRY(add_spoke(r, M, cen, medge[k], mfrac[k], mid[k], err));
         /* a valence-0 face vertex of the triangle now takes one quad */
         for (int k = 0; k < 3; k++) {
             const sq_layout_node *n = &L->nodes[P->corners[k]];
@@ -654,6 +682,72 @@ static sq_status split_triangle(rctx *r, int *done, sq_error *err)
                 L->vertex_quads[n->id] = 1;
         }
         L->stats.triangles_repaired++;
+        *done = 1;
+    }
+    return SQ_OK;
+}
+
+/* The half-edge (index into P->half) leaving a boundary valence-2 point on
+ * P's cycle that is not a corner of P, or -1: a face vertex taking one quad
+ * with no separatrix at it. */
+static int valence2_half(const sq_layout *L, const sq_layout_patch *P)
+{
+    for (int h = 0; h < P->nhalf; h++) {
+        const sq_layout_edge *E = &L->edges[P->half[h].edge];
+        int v = P->half[h].reversed ? E->n1 : E->n0;
+        const sq_layout_node *n = &L->nodes[v];
+        if (n->kind != SQ_LNODE_CORNER || L->vertex_quads[n->id] != 1 || n->degree != 2) continue;
+        int corner = 0;
+        for (int k = 0; k < P->ncorners; k++) corner |= P->corners[k] == v;
+        if (!corner) return h;
+    }
+    return -1;
+}
+
+/* Boundary valence-2 point (Jezdimirović 2021 §6.2–6.3, Fig. 18): a face
+ * vertex taking one quad (two mesh edges) where the boundary is nearly
+ * straight, so that its patch, a quadrilateral in topology, has only three
+ * geometric corners.  It is split into two valence-3 points: a valence-3
+ * node imposed at the barycentre of the patch, joined by a spoke to the
+ * vertex (which then has three edges and takes two quads, a regular
+ * boundary point) and by spokes to the midpoints of the two sides away from
+ * it, so that the triangle becomes three quads; the index is kept (1/4 at
+ * the vertex before, 1/4 at the node after).  Marcon's midpoint division
+ * would put a foot beside the vertex instead and leave it a corner of no
+ * patch. */
+static sq_status split_valence2(rctx *r, int *done, sq_error *err)
+{
+    sq_layout *L = r->L;
+    for (int p = 0; p < L->npatches && !*done; p++) {
+        const sq_layout_patch *P = &L->patches[p];
+        if (P->ncorners != 3 || P->ncycles != 1) continue;
+        int h = valence2_half(L, P);
+        if (h < 0) continue;
+        /* side k (corner k to corner k+1) holding the vertex */
+        int side = 0;
+        for (int k = 0; k < 3; k++) {
+            int a = P->corner_half[k], b = P->corner_half[(k + 1) % 3];
+            if (b <= a) b += P->nhalf;
+            if ((h > a && h < b) || (h + P->nhalf > a && h + P->nhalf < b)) side = k;
+        }
+        const sq_layout_edge *E = &L->edges[P->half[h].edge];
+        const sq_layout_node *V = &L->nodes[P->half[h].reversed ? E->n1 : E->n0];
+        int vid = V->id;
+        double vxy[2] = {V->x, V->y}, mid[2][2], cen[2];
+        int medge[2];
+        double mfrac[2];
+        for (int j = 0; j < 2; j++)
+            SQ_TRY(side_mid(r, P, (side + 1 + j) % 3, &medge[j], &mfrac[j], mid[j], err));
+        if (!patch_centroid(L, P, cen)) {
+            cen[0] = (vxy[0] + mid[0][0] + mid[1][0]) / 3.0;
+            cen[1] = (vxy[1] + mid[0][1] + mid[1][1]) / 3.0;
+        }
+        SQ_TRY(lay_sing_push(L, cen[0], cen[1], 3, SQ_LROLE_VALENCE2, err));
+        int M = L->nsing - 1;
+        SQ_TRY(straight_sep(L, M, cen, vxy, (sq_sep_end){SQ_END_CORNER, vid, 0.0}, err));
+        for (int j = 0; j < 2; j++) SQ_TRY(add_spoke(r, M, cen, medge[j], mfrac[j], mid[j], err));
+        L->vertex_quads[vid] = 2;
+        L->stats.valence2_split++;
         *done = 1;
     }
     return SQ_OK;
@@ -764,6 +858,7 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
         sq_layout_defects_free(&d);
         if (sq_layout_check(L, &d) == 0) break;
         st = cut_annulus(&r, &done, err);
+        if (st == SQ_OK && !done) st = split_valence2(&r, &done, err);
         if (st == SQ_OK && !done) st = split_triangle(&r, &done, err);
         if (st == SQ_OK && !done) break; /* stuck */
     }

@@ -10,6 +10,7 @@ static const char *role_origin(const sq_layout *L, int k)
 {
     switch (L->role[k]) {
     case SQ_LROLE_MIDPOINT: return "midpoint";
+    case SQ_LROLE_VALENCE2: return "valence2-split";
     case SQ_LROLE_CROSSING: return "crossing";
     case SQ_LROLE_TJUNCTION: return "t-junction";
     default: return sq_origin_name(L->sing[k].origin);
@@ -58,6 +59,7 @@ void sq_json_layout_keys(sq_json *j, const sq_layout_result *r)
     sq_json_key_int(j, "t_junctions", s->t_junctions);
     sq_json_key_int(j, "limit_cycles_cut", s->limit_cycles_cut);
     sq_json_key_int(j, "triangles_repaired", s->triangles_repaired);
+    sq_json_key_int(j, "valence2_split", s->valence2_split);
     sq_json_key_int(j, "annuli_cut", s->annuli_cut);
     sq_json_key_int(j, "duplicates_removed", s->duplicates_removed);
     sq_json_key_int(j, "crossings_split", s->crossings_split);
@@ -167,19 +169,46 @@ sq_status sq_write_layout_svg(const char *path, const sq_layout_result *r, sq_er
         sq_svg_circle(&svg, s->x, s->y, 6.5, sq_svg_valence_color(s->valence));
         if (L->role[k] == SQ_LROLE_MIDPOINT) /* a repair: labelled */
             sq_svg_text(&svg, s->x, s->y, 8.0, 14.0, 12.0, "#b00000", "midpoint");
+        else if (L->role[k] == SQ_LROLE_VALENCE2)
+            sq_svg_text(&svg, s->x, s->y, 8.0, 14.0, 12.0, "#b00000", "valence-2 split");
         else if (L->role[k] == SQ_LROLE_TJUNCTION)
             sq_svg_text(&svg, s->x, s->y, 8.0, 14.0, 12.0, "#b00000", "T");
     }
+    /* the boundary point of a valence-2 split, where its spoke ends */
+    for (int k = 0; k < L->seps.n; k++) {
+        const sq_separatrix *sp = &L->seps.s[k];
+        if (sp->start.kind != SQ_END_SINGULAR || L->role[sp->start.id] != SQ_LROLE_VALENCE2 ||
+            sp->end.kind != SQ_END_CORNER)
+            continue;
+        const double *q = &sp->xy[2 * sp->npts - 2];
+        sq_svg_circle(&svg, q[0], q[1], 4.5, "#b00000");
+        sq_svg_text(&svg, q[0], q[1], 8.0, -8.0, 12.0, "#b00000", "valence-2 point");
+    }
+    /* the caption names only the repairs made, so it fits one line */
     const sq_layout_stats *st = &L->stats;
-    char caption[256];
-    snprintf(caption, sizeof caption,
-             "%s layout: %d separatrices, %d/%d quad patches; repairs: %d limit cycles, %d "
-             "T-junctions, %d triangles, %d annuli, %d duplicates, %d crossings",
-             r->valid ? "valid" : "INVALID", st->separatrices, st->quad_patches, st->patches,
-             st->limit_cycles_cut, st->t_junctions, st->triangles_repaired, st->annuli_cut,
-             st->duplicates_removed, st->crossings_split);
-    sq_svg_text(&svg, r->info->bbox[0], r->info->bbox[1], 0.0, 16.0, 11.0,
-                "#333333", caption);
+    const struct {
+        int n;
+        const char *what;
+    } rep[] = {{st->limit_cycles_cut, "limit cycles cut"},
+               {st->t_junctions, "T-junctions"},
+               {st->triangles_repaired, "midpoint divisions"},
+               {st->valence2_split, "valence-2 points split"},
+               {st->annuli_cut, "annuli cut"},
+               {st->duplicates_removed, "duplicates"},
+               {st->crossings_split, "crossings"}};
+    char caption[320];
+    int len = snprintf(
+        caption, sizeof caption,
+        "%s layout: %d separatrices, %d/%d quad patches; repairs:", r->valid ? "valid" : "INVALID",
+        st->separatrices, st->quad_patches, st->patches);
+    int any = 0;
+    for (size_t k = 0; k < sizeof rep / sizeof rep[0] && len < (int)sizeof caption; k++)
+        if (rep[k].n > 0)
+            len += snprintf(caption + len, sizeof caption - (size_t)len, "%s %d %s",
+                            any++ ? "," : "", rep[k].n, rep[k].what);
+    if (!any && len < (int)sizeof caption)
+        snprintf(caption + len, sizeof caption - (size_t)len, " none");
+    sq_svg_text(&svg, r->info->bbox[0], r->info->bbox[1], 0.0, 16.0, 11.0, "#333333", caption);
     sq_svg_end(&svg);
     return sq_outfile_commit(&f, err);
 }

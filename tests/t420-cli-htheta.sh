@@ -2,7 +2,9 @@
 # semquad field --singularities: exit 5 with the explanation for a pattern
 # breaking Gauss-Bonnet or with a bad line, exit 0 with VTU (H, theta), SVG
 # and a JSON report of kind H-theta otherwise; the holonomy warning names
-# the loop.  usage: t420-cli-htheta.sh SEMQUAD EXAMPLES_DIR
+# the loop; semquad layout with a pattern giving an obtuse vertex one quad
+# (a boundary valence-2 point) repairs it by the valence-2 split.
+# usage: t420-cli-htheta.sh SEMQUAD EXAMPLES_DIR
 set -u
 sq=$1
 ex=$2
@@ -49,4 +51,11 @@ grep -q "misaligned by -19.1[0-9]* deg with boundary loop 1" "$tmp/err" || fail 
 "$sq" field "$ex/triangle.step" --singularities natural --report "$tmp/t.json" >/dev/null 2>&1
 [ $? -eq 0 ] || fail "triangle natural: exit status not 0"
 grep -q '"origin": *"critical-point"' "$tmp/t.json" || fail "triangle natural: origin"
+"$sq" layout "$ex/obtuse_quad.step" --singularities "$ex/obtuse_quad_v2.txt" \
+    --report "$tmp/q.json" --svg "$tmp/q.svg" >/dev/null 2>"$tmp/err"
+[ $? -eq 0 ] || fail "obtuse_quad valence-2: exit status not 0: $(cat "$tmp/err")"
+grep -q '"valence2_split": *1,' "$tmp/q.json" || fail "obtuse_quad valence-2: not split once"
+grep -q '"quad_patches": *3,' "$tmp/q.json" || fail "obtuse_quad valence-2: not 3 quad patches"
+grep -q '"origin": *"valence2-split"' "$tmp/q.json" || fail "obtuse_quad valence-2: node origin"
+grep -q 'valence-2 point' "$tmp/q.svg" || fail "obtuse_quad valence-2: not marked in the SVG"
 exit $((fails != 0))

@@ -2,8 +2,9 @@
  * valid: a duplicated separatrix (Jezdimirović §6.1 Fig. 15), a crossing
  * made a regular node, a limit cycle (open end) cut at its orthogonal
  * crossing and the T-junction left repaired by continuing it (Fig. 16–17),
- * a triangular patch split by midpoint division (Marcon §3.4), an annulus
- * cut along the field into quads. */
+ * a triangular patch split by midpoint division (Marcon §3.4), a boundary
+ * valence-2 point split into two valence-3 points (Jezdimirović §6.3,
+ * Fig. 18), an annulus cut along the field into quads. */
 #include "layout.h"
 #include "t51x_layout.h"
 #include "test_util.h"
@@ -161,6 +162,72 @@ int main(void)
             fails += sq_check_rel("triangle", "patch area", L.patches[p].area, sqrt(3.0) / 12, 1e-9);
         sq_layout_free(&L);
         close_shape(&tr);
+    }
+    /* obtuse quadrilateral (0,0), (0.7,-0.2), (2,0), (1,1.6), one quad per
+     * vertex: the 155.3° vertex is a boundary valence-2 point, within 30°
+     * of straight, so the one patch is a quad in topology with three
+     * geometric corners.  Split (Fig. 18): a valence-3 node at the patch's
+     * barycentre (89/90, 7/15) joined to that vertex (now two quads) and to
+     * the midpoints (0.5, 0.8), (1.5, 0.8) of the upper sides: three quads.
+     * (Midpoint division would put a foot at (0.9902, -0.1554) instead and
+     * leave the vertex a corner of no patch: invalid.) */
+    {
+        shape ki;
+        open_shape(&ki, "obtuse_quad.step");
+        const char *nm = "valence-2";
+        fails += build(nm, &ki, 0, NULL, NULL, 0, NULL, &L);
+        fails += sq_check_int(nm, "valence-2 points split", L.stats.valence2_split, 1);
+        fails += sq_check_int(nm, "midpoint divisions", L.stats.triangles_repaired, 0);
+        fails += sq_check_int(nm, "patches", L.npatches, 3);
+        fails += sq_check_int(nm, "quad patches", L.stats.quad_patches, 3);
+        fails += sq_check_int(nm, "separatrices", L.stats.separatrices, 3);
+        sq_layout_defects d;
+        fails += sq_check_int(nm, "defects", sq_layout_check(&L, &d), 0);
+        fails += sq_check_int(nm, "crossings", d.count[SQ_DEFECT_CROSSING], 0);
+        sq_layout_defects_free(&d);
+        fails += sq_check_int(nm, "inserted nodes", L.nsing, 1);
+        if (L.nsing == 1) {
+            fails += sq_check_int(nm, "node valence", L.sing[0].valence, 3);
+            fails += sq_check_int(nm, "node role", L.role[0], SQ_LROLE_VALENCE2);
+            fails += sq_check_abs(nm, "node x", L.sing[0].x, 89.0 / 90, 1e-9);
+            fails += sq_check_abs(nm, "node y", L.sing[0].y, 7.0 / 15.0, 1e-9);
+        }
+        /* patches having each node as a corner: the node 3, the split
+         * vertex 2 (three edges there now), the other vertices 1 */
+        for (int v = 0; v < L.nnodes; v++) {
+            const sq_layout_node *n = &L.nodes[v];
+            int c = 0;
+            for (int p = 0; p < L.npatches; p++)
+                for (int k = 0; k < L.patches[p].ncorners; k++) c += L.patches[p].corners[k] == v;
+            if (n->kind == SQ_LNODE_SINGULAR) {
+                fails += sq_check_int(nm, "node corner of", c, 3);
+            } else if (n->kind == SQ_LNODE_CORNER && fabs(n->y + 0.2) < 1e-12) {
+                fails += sq_check_int(nm, "split vertex corner of", c, 2);
+                fails += sq_check_int(nm, "split vertex edges", n->degree, 3);
+                fails += sq_check_int(nm, "split vertex quads", L.vertex_quads[n->id], 2);
+            } else if (n->kind == SQ_LNODE_CORNER) {
+                fails += sq_check_int(nm, "vertex corner of", c, 1);
+            }
+        }
+        /* the three quads' areas (shoelace), matched to the patches by size */
+        const double S[2] = {89.0 / 90, 7.0 / 15}, quads[3][8] = {
+            {0, 0, 0.7, -0.2, S[0], S[1], 0.5, 0.8},
+            {0.7, -0.2, 2, 0, 1.5, 0.8, S[0], S[1]},
+            {1.5, 0.8, 1, 1.6, 0.5, 0.8, S[0], S[1]}};
+        for (int p = 0; p < L.npatches; p++) {
+            fails += sq_check_int(nm, "patch corners", L.patches[p].ncorners, 4);
+            double a = L.patches[p].area, want = 0.0;
+            for (int q = 0; q < 3; q++) {
+                double w = 0.0;
+                for (int k = 0; k < 4; k++)
+                    w += 0.5 * (quads[q][2 * k] * quads[q][(2 * k + 3) % 8] -
+                                quads[q][(2 * k + 2) % 8] * quads[q][2 * k + 1]);
+                if (fabs(w - a) < fabs(want - a)) want = w;
+            }
+            fails += sq_check_rel(nm, "patch area", a, want, 1e-9);
+        }
+        sq_layout_free(&L);
+        close_shape(&ki);
     }
     /* quarter circle with a quarter circle of radius 0.5 around the corner:
      * a triangular patch beside a quad; midpoint division puts a T-junction
