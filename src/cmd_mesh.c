@@ -136,6 +136,12 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
     sq_quad_quality q;
     if (st == SQ_OK) {
         double t1 = sq_now();
+        /* sizes from e^H where the H/θ field was traced */
+        sq_cross_field cf;
+        if (!strcmp(r.field.kind, "H-theta")) {
+            cf = sq_htheta_cross_field(&r.htheta);
+            mo.field = &cf;
+        }
         st = sq_mesh_layout(f, r.info, &r.layout, &mo, &m, err);
         if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, &q, err);
         t.mesh = sq_now() - t1;

@@ -101,11 +101,72 @@ static void edge_fractions(double len, int n, int grade, const sq_mesher_options
     }
 }
 
+/* Edge measure in units of the field's size: m[e] = the integral of
+ * ds / e^H along edge e (its length when the field carries no size), and
+ * its cumulative values at SIZE_SAMPLES + 1 equal arc-length fractions.
+ * Boundary-layer edges keep their length: their grading is absolute. */
+#define SIZE_SAMPLES 32
+static sq_status size_measure(const sq_layout *L, const cad_face *face, const sq_face_info *info,
+                              const sq_mesher_options *o, const int *grade, double *m, double *cum, sq_error *err)
+{
+    for (int e = 0; e < L->nedges; e++) {
+        double *c = &cum[(size_t)e * (SIZE_SAMPLES + 1)], prev = 0.0;
+        int elem = -1;
+        for (int k = 0; k <= SIZE_SAMPLES; k++) {
+            double x[2], r = 1.0;
+            if (o->field && o->field->size && !grade[e]) {
+                SQ_TRY(sq_layout_edge_point(L, face, e, (double)k / SIZE_SAMPLES, x, err));
+                double sz = o->field->size(o->field->ctx, x, &elem);
+                /* e^H vanishes at a valence-3 point and blows up at a
+                 * valence-5 one: bounded to a factor 4 either way */
+                r = sz > 0.0 ? 1.0 / fmin(fmax(sz, 0.25), 4.0) : 1.0;
+            }
+            c[k] = k == 0 ? 0.0 : c[k - 1] + 0.5 * (prev + r) * L->edges[e].length / SIZE_SAMPLES;
+            prev = r;
+        }
+        m[e] = c[SIZE_SAMPLES];
+    }
+    /* e^H is relative: scaled by c with c^2 the mean of e^{-2H} over the
+     * face (sampled on a grid), so that about area / size^2 quads result,
+     * as without it */
+    if (o->field && o->field->size) {
+        double sum = 0.0;
+        int cnt = 0, elem = -1;
+        for (int j = 0; j < SIZE_SAMPLES; j++)
+            for (int i = 0; i < SIZE_SAMPLES; i++) {
+                double x[2] = {info->bbox[0] + (i + 0.5) / SIZE_SAMPLES * (info->bbox[2] - info->bbox[0]),
+                               info->bbox[1] + (j + 0.5) / SIZE_SAMPLES * (info->bbox[3] - info->bbox[1])};
+                double sz = o->field->size(o->field->ctx, x, &elem);
+                if (sz <= 0.0) continue; /* outside */
+                sz = fmin(fmax(sz, 0.25), 4.0);
+                sum += 1.0 / (sz * sz);
+                cnt++;
+            }
+        double c = cnt ? sqrt(sum / cnt) : 1.0;
+        for (int e = 0; e < L->nedges; e++)
+            if (!grade[e]) {
+                m[e] /= c;
+                for (int k = 0; k <= SIZE_SAMPLES; k++) cum[(size_t)e * (SIZE_SAMPLES + 1) + k] /= c;
+            }
+    }
+    return SQ_OK;
+}
+
+/* Arc-length fraction where the cumulative measure cum reaches fraction u. */
+static double measure_fraction(const double *cum, double u)
+{
+    double target = u * cum[SIZE_SAMPLES];
+    int k = 0;
+    while (k < SIZE_SAMPLES - 1 && cum[k + 1] < target) k++;
+    double d = cum[k + 1] - cum[k];
+    return (k + (d > 0.0 ? (target - cum[k]) / d : 0.0)) / SIZE_SAMPLES;
+}
+
 /* Design 1: chord quantization. */
-static sq_status quantize(const sq_layout *L, double size, const int *grade,
+static sq_status quantize(const sq_layout *L, const double *len, double size, const int *grade,
                           const sq_mesher_options *o, int *n, sq_error *err)
 {
-    for (int e = 0; e < L->nedges; e++) n[e] = edge_segments(L->edges[e].length, size, grade[e], o);
+    for (int e = 0; e < L->nedges; e++) n[e] = edge_segments(len[e], size, grade[e], o);
     for (int changed = 1; changed;) {
         changed = 0;
         for (int q = 0; q < L->npatches; q++) {
@@ -117,7 +178,7 @@ static sq_status quantize(const sq_layout *L, double size, const int *grade,
                 double ratio = -1.0;
                 for (int h = p->side_start[s]; h < p->side_start[s + 1]; h++) {
                     int e = p->half[h].edge;
-                    double r = L->edges[e].length / n[e];
+                    double r = len[e] / n[e];
                     if (r > ratio) {
                         ratio = r;
                         best = e;
@@ -877,7 +938,11 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
     int *grade = malloc(sizeof(int) * ((size_t)L->nedges + 1));
     if (st == SQ_OK && !grade) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK) bl_grading(L, info, opt, grade);
-    if (st == SQ_OK) st = quantize(L, size, grade, opt, en.n, err);
+    double *elen = malloc(sizeof(double) * ((size_t)L->nedges + 1));
+    double *cum = malloc(sizeof(double) * ((size_t)L->nedges * (SIZE_SAMPLES + 1) + 1));
+    if (st == SQ_OK && (!elen || !cum)) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) st = size_measure(L, face, info, opt, grade, elen, cum, err);
+    if (st == SQ_OK) st = quantize(L, elen, size, grade, opt, en.n, err);
     /* Design 2: the vertices of every edge, once, by arc length; ids: the
      * layout's nodes first */
     long next_id = L->nnodes;
@@ -894,6 +959,8 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
             break;
         }
         edge_fractions(L->edges[e].length, n, grade[e], opt, f);
+        if (!grade[e])
+            for (int k = 1; k < n; k++) f[k] = measure_fraction(&cum[(size_t)e * (SIZE_SAMPLES + 1)], f[k]);
         for (int k = 1; k < n && st == SQ_OK; k++)
             st = sq_layout_edge_point(L, face, e, f[k], &en.pts[e][2 * k], err);
         free(f);
@@ -944,6 +1011,8 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
     free(keep);
     vmesh_free(&v);
     free(grade);
+    free(elen);
+    free(cum);
     for (int q = 0; grids && q < L->npatches; q++) patch_grid_free(&grids[q]);
     free(grids);
     edge_nodes_free(&en, L->nedges);

@@ -3,7 +3,8 @@
  *
  * design:
  *  1. chord quantization: every layout edge gets n_e >= 1 segments, first
- *     round(length / size); then, patch by patch, opposite sides are made
+ *     round(length / size) — the length measured in units of e^H when the
+ *     field carries a size; then, patch by patch, opposite sides are made
  *     equal by adding segments to the smaller side (to its edge with the
  *     largest length per segment), repeated until every patch matches — the
  *     additions travel along the layout's chords;
@@ -24,6 +25,7 @@
 #ifndef SQ_QUAD_MESHER_H
 #define SQ_QUAD_MESHER_H
 
+#include "cross_field.h"
 #include "layout.h"
 #include "quad_mesh.h"
 
@@ -37,6 +39,10 @@ typedef struct {
     const int *bl_edges;
     double bl_first, bl_ratio;
     int bl_layers;
+    /* the field traced, or NULL: where it carries a size (the H/θ field's
+     * e^H, Jezdimirović 2021 eq. 21) the target size is size * e^H, so the
+     * chords follow the per-patch parametrization's scale */
+    const sq_cross_field *field;
 } sq_mesher_options;
 
 void sq_mesher_options_default(sq_mesher_options *opt);

@@ -58,4 +58,14 @@ grep -q '"valence2_split": *1,' "$tmp/q.json" || fail "obtuse_quad valence-2: no
 grep -q '"quad_patches": *3,' "$tmp/q.json" || fail "obtuse_quad valence-2: not 3 quad patches"
 grep -q '"origin": *"valence2-split"' "$tmp/q.json" || fail "obtuse_quad valence-2: node origin"
 grep -q 'valence-2 point' "$tmp/q.svg" || fail "obtuse_quad valence-2: not marked in the SVG"
+# mesh sizes from e^H (Jezdimirović 2021 eq. 21): on the triangle the three
+# kite patches take 4 x 4 quads each, about area / size^2 = 43.3 quads — with
+# a uniform size their short spokes would be refined to match the 0.5-long
+# boundary sides (5 x 5 each, 75 quads, the guiding-field mesh)
+"$sq" mesh "$ex/triangle.step" --singularities natural --size 0.1 -q -o "$tmp/t.msh" \
+    --report "$tmp/tm.json" 2>"$tmp/err"
+[ $? -eq 0 ] || fail "triangle natural mesh: exit status not 0: $(cat "$tmp/err")"
+grep -q '"quads": *48,' "$tmp/tm.json" || fail "triangle natural mesh: not 48 quads (e^H sizes)"
+"$sq" mesh "$ex/triangle.step" --size 0.1 -q -o "$tmp/t.msh" --report "$tmp/tg.json" 2>/dev/null
+grep -q '"quads": *75,' "$tmp/tg.json" || fail "triangle guiding mesh: not 75 quads"
 exit $((fails != 0))
