@@ -72,6 +72,11 @@ static sq_status htheta_pattern(const cad_face *face, const sq_layout_options *o
     out->info = &h->info;
     out->field = (sq_field_summary){"H-theta", SEM_CG, opt->htheta.order, h->tri.mesh->ntris,
                                     0, h->t_triangulate, h->t_solve, 0.0};
+    if (from_analysis) { /* the guiding field's stage ran first */
+        out->field.t_triangulate += out->analysis.t_triangulate;
+        out->field.t_solve += out->analysis.t_solve;
+        out->field.t_critical = out->analysis.t_critical;
+    }
     return SQ_OK;
 }
 
