@@ -2,7 +2,8 @@
 # semquad field --singularities: exit 5 with the explanation for a pattern
 # breaking Gauss-Bonnet or with a bad line, exit 0 with VTU (H, theta), SVG
 # and a JSON report of kind H-theta otherwise; the holonomy warning names
-# the loop.  usage: t420-cli-htheta.sh SEMQUAD EXAMPLES_DIR
+# the loop; semquad mesh on the disc splits its degenerate centre (a note on
+# stderr).  usage: t420-cli-htheta.sh SEMQUAD EXAMPLES_DIR
 set -u
 sq=$1
 ex=$2
@@ -49,4 +50,13 @@ grep -q "misaligned by -19.1[0-9]* deg with boundary loop 1" "$tmp/err" || fail 
 "$sq" field "$ex/triangle.step" --singularities natural --report "$tmp/t.json" >/dev/null 2>&1
 [ $? -eq 0 ] || fail "triangle natural: exit status not 0"
 grep -q '"origin": *"critical-point"' "$tmp/t.json" || fail "triangle natural: origin"
+
+# a degenerate critical point (the disc's index-4 centre) is split into four
+# valence-3 points, said on stderr, and meshed on their H/theta field
+"$sq" mesh "$ex/disc.step" --report "$tmp/d.json" >/dev/null 2>"$tmp/err"
+[ $? -eq 0 ] || fail "disc mesh: exit status not 0: $(cat "$tmp/err")"
+grep -q "1 degenerate singular point .* split into 4 elementary points" "$tmp/err" ||
+    fail "disc mesh: no note on the split: $(cat "$tmp/err")"
+grep -q '"irregular_interior_vertices": *4' "$tmp/d.json" || fail "disc mesh: irregular vertices"
+grep -q '"inverted": *0' "$tmp/d.json" || fail "disc mesh: inverted quads"
 exit $((fails != 0))
