@@ -11,10 +11,12 @@
  *    nearest other singular point, whichever is smaller (the points stay
  *    well inside, apart from the others, and at the scale of the face:
  *    the disc's four valence-3 points at half its radius);
- *  - φ = arg(c)/(4 − m): the ray to every split point is a direction of the
- *    cross there (arg(w)/4 = φ mod π/2, eq. 2), so the points are joined to
- *    z0's neighbourhood along field lines, and the placement turns with the
- *    face (rotating face and field by α multiplies c by e^{i(4−m)α});
+ *  - φ = arg(c)/(4 − m): the ray to the first split point is a direction of
+ *    the cross there (arg(w)/4 = φ mod π/2, eq. 2), and so is the ray to
+ *    every one when (4 − m)/|m| is an integer (m = 2, −2, −4), so the points
+ *    are joined to z0's neighbourhood along field lines; the placement turns
+ *    with the face (rotating face and field by α multiplies c by
+ *    e^{i(4−m)α});
  *    m = 4 makes every ray a field line (z^4 is rotation invariant): φ
  *    points at the nearest boundary point (the x axis when the boundary is
  *    a circle about z0, as for the disc). */

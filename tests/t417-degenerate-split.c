@@ -5,13 +5,48 @@
  * valence-3 points at half the distance to the boundary, symmetric under
  * rotations by 90° to 1e-9, traces the H/θ field of that pattern and gets
  * 5 quad patches, each split point a corner of 3 of them; the quad mesh of
- * that layout has no inverted quad. */
+ * that layout has no inverted quad.  Synthetic zeros of index 2 and -2 on
+ * the square split into two valence-3 / valence-5 points at half the
+ * distance to the boundary, on rays that are directions of the cross of
+ * the expansion there ((arg c + m φ)/4 = φ mod π/2); index 3 on the first
+ * ray only (no placement of three points 120° apart does better). */
 #include "degenerate_split.h"
 #include "layout_pipeline.h"
 #include "quad_mesher.h"
 #include "test_util.h"
 
+#include <complex.h>
 #include <gsl/gsl_errno.h>
+
+/* One synthetic zero of index m with expansion coefficient c at (0.5, 0.4)
+ * of the unit square, split. */
+static int synthetic(const cad_face *square, int m, double complex c)
+{
+    sq_critical_point p = {.x = 0.5, .y = 0.4, .index = m, .valence = 4 - m,
+                           .dist_boundary = 0.4, .coef = {creal(c), cimag(c)}};
+    sq_field_analysis a = {.npoints = 1, .points = &p};
+    sq_singularity *s = NULL;
+    int n = 0, nd = 0, fails = 0;
+    sq_error err;
+    char ctx[64];
+    snprintf(ctx, sizeof ctx, "index %d, c = %g%+gi", m, creal(c), cimag(c));
+    SQ_TEST_OK(sq_elementary_points(square, &a, &s, &n, &nd, &err), err);
+    fails += sq_check_int(ctx, "zeros split", nd, 1);
+    fails += sq_check_int(ctx, "points", n, abs(m));
+    for (int k = 0; k < n; k++) {
+        double dx = s[k].x - p.x, dy = s[k].y - p.y, phi = atan2(dy, dx);
+        fails += sq_check_int(ctx, "valence", s[k].valence, m > 0 ? 3 : 5);
+        fails += sq_check_abs(ctx, "radius", hypot(dx, dy), SQ_SPLIT_FRACTION * 0.4, 1e-12);
+        double complex w = c * cpow(dx + I * dy, m > 0 ? m : 0) * cpow(dx - I * dy, m < 0 ? -m : 0);
+        double off = 0.25 * carg(w) - phi; /* cross direction against the ray */
+        /* every ray when (4 - m)/|m| is an integer, else the first */
+        if (k == 0 || (4 - m) % abs(m) == 0)
+            fails += sq_check_abs(ctx, "cross along the ray (mod pi/2)",
+                                  off - M_PI_2 * round(off / M_PI_2), 0.0, 1e-12);
+    }
+    free(s);
+    return fails;
+}
 
 int main(void)
 {
@@ -77,6 +112,17 @@ int main(void)
     }
     sq_quad_mesh_free(&m);
     sq_layout_result_free(&r);
+    cad_face_free(&f);
+    cad_model_free(&model);
+
+    sq_test_path(path, sizeof path, 0, "square.step");
+    SQ_TEST_OK(cad_model_read(path, &model, &err), err);
+    SQ_TEST_OK(cad_face_create(model, 0, &f, &err), err);
+    fails += synthetic(f, 2, 1.0);
+    fails += synthetic(f, 2, I);
+    fails += synthetic(f, -2, 1.0);
+    fails += synthetic(f, -2, cexp(0.7 * I));
+    fails += synthetic(f, 3, cexp(-1.1 * I));
     cad_face_free(&f);
     cad_model_free(&model);
     return fails ? 1 : 0;
