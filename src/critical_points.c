@@ -19,6 +19,9 @@
  * round-off a zero of multiplicity m splits into up to m roots about
  * (round-off)^(1/m) apart (1e-4 of the element size for m = 4). */
 #define CLUSTER_REL 1e-2
+/* Roots closer to each other than this times their distance to the
+ * boundary are one singular point (a cluster). */
+#define CLUSTER_BOUNDARY_REL 0.05
 /* samples of (u, v) on the circle fitting a degenerate zero's expansion */
 #define FIT_SAMPLES 256
 
@@ -249,15 +252,43 @@ sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *fac
             n++;
         }
     }
-    /* indices on circles that hold no other point and stay in the face */
+    for (int q = 0; q < n && st == SQ_OK; q++) {
+        const double c[2] = {p[q].x, p[q].y};
+        st = sq_face_boundary_distance(face, c, &p[q].dist_boundary, err);
+    }
+    /* clusters: a zero of multiplicity m that the discretization error
+     * splits into m simple roots (the disc's z^4 at P = 4: four roots 0.01
+     * apart) is one singular point at the layout's scale */
+    double *spread = calloc((size_t)n + 1, sizeof *spread);
+    if (st == SQ_OK && !spread) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int q = 0; q < n && st == SQ_OK; q++) {
+        double sx = p[q].x, sy = p[q].y;
+        int cnt = 1;
+        for (int o = q + 1; o < n; o++) {
+            double d = hypot(p[o].x - p[q].x, p[o].y - p[q].y);
+            if (d >= CLUSTER_BOUNDARY_REL * fmin(p[q].dist_boundary, p[o].dist_boundary)) continue;
+            sx += p[o].x, sy += p[o].y, cnt++;
+            spread[q] = fmax(spread[q], d);
+            p[o--] = p[--n]; /* drop o, look at the one moved there */
+        }
+        if (cnt > 1) {
+            const double c[2] = {sx / cnt, sy / cnt};
+            int e;
+            double r, s;
+            if (!sem_locator_find(loc, c, p[q].elem, &e, &r, &s))
+                p[q].x = c[0], p[q].y = c[1], p[q].elem = e, p[q].r = r, p[q].s = s;
+            st = sq_face_boundary_distance(face, c, &p[q].dist_boundary, err);
+        }
+    }
+    /* indices on circles that hold no other point and stay in the face (and
+     * enclose a cluster) */
     for (int q = 0; q < n && st == SQ_OK; q++) {
         double c[2] = {p[q].x, p[q].y}, rho = 0.25 * element_size(m, p[q].elem);
-        st = sq_face_boundary_distance(face, c, &p[q].dist_boundary, err);
-        if (st != SQ_OK) break;
         p[q].near_boundary = p[q].dist_boundary < SQ_NEAR_BOUNDARY_REL * diag;
         rho = fmin(rho, 0.5 * p[q].dist_boundary);
         for (int o = 0; o < n; o++)
             if (o != q) rho = fmin(rho, 0.4 * hypot(p[o].x - c[0], p[o].y - c[1]));
+        rho = fmax(rho, 2.5 * spread[q]);
         if (p[q].near_boundary) {
             p[q].index = 0; /* no circle fits: reported with its distance */
         } else {
@@ -276,6 +307,7 @@ sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *fac
             }
         }
     }
+    free(spread);
     if (st != SQ_OK) {
         free(p);
         return st;

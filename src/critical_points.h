@@ -13,7 +13,11 @@
  *  3. merge roots found more than once (shared edges and vertices) or
  *     closer than 1e-2 of the element size (round-off splits a zero of
  *     multiplicity m into m roots, and Newton converges only linearly to
- *     it: an iterate at the round-off floor of (u, v) is accepted);
+ *     it: an iterate at the round-off floor of (u, v) is accepted); roots
+ *     closer to each other than 0.05 x their distance to the boundary are
+ *     one point at their mean (the discretization error splits a multiple
+ *     zero too: the disc's z^4 into four roots 0.01 apart at P = 4), its
+ *     index taken on a circle enclosing them;
  *  4. index = winding number of (u, v) on a small circle around the point
  *     (unwrapped atan2, sampled until every step turns less than π/2);
  *     valence V = 4 - index (eq. 13, Table 1), indices ±2 included;

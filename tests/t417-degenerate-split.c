@@ -5,7 +5,8 @@
  * valence-3 points at half the distance to the boundary, symmetric under
  * rotations by 90° to 1e-9, traces the H/θ field of that pattern and gets
  * 5 quad patches, each split point a corner of 3 of them; the quad mesh of
- * that layout has no inverted quad.  Synthetic zeros of index 2 and -2 on
+ * that layout has no inverted quad; at P = 4, where the discretization
+ * error splits the zero into four close roots, the same.  Synthetic zeros of index 2 and -2 on
  * the square split into two valence-3 / valence-5 points at half the
  * distance to the boundary, on rays that are directions of the cross of
  * the expansion there ((arg c + m φ)/4 = φ mod π/2); index 3 on the first
@@ -111,6 +112,23 @@ int main(void)
         fails++;
     }
     sq_quad_mesh_free(&m);
+    sq_layout_result_free(&r);
+    cad_face_free(&f);
+    cad_model_free(&model);
+
+    /* P = 4: the discretization error splits the zero into four roots
+     * 0.01 apart, one cluster, split again at the layout's scale */
+    sq_test_path(path, sizeof path, 0, "disc.step");
+    SQ_TEST_OK(cad_model_read(path, &model, &err), err);
+    SQ_TEST_OK(cad_face_create(model, 0, &f, &err), err);
+    lo.field.order = lo.field.tri.order = 4;
+    SQ_TEST_OK(sq_layout_run(f, &lo, &r, &err), err);
+    fails += sq_check_int("disc P=4", "critical points", r.analysis.npoints, 1);
+    fails += sq_check_int("disc P=4", "split points", r.nsing, 4);
+    fails += sq_check_int("disc P=4", "quad patches", r.layout.stats.quad_patches, 5);
+    fails += sq_check_int("disc P=4", "patches", r.layout.stats.patches, 5);
+    for (int k = 0; k < r.nsing; k++)
+        fails += sq_check_abs("disc P=4", "radius", hypot(r.sing[k].x, r.sing[k].y), 0.5, 1e-3);
     sq_layout_result_free(&r);
     cad_face_free(&f);
     cad_model_free(&model);
