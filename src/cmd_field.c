@@ -21,9 +21,14 @@ static sq_status field_htheta(const char *path, int face, const cad_face *f,
     if (!strcmp(sing, "natural")) {
         sq_field_analysis an;
         SQ_TRY(sq_field_analyse(f, opt, &an, err));
-        st = sq_pattern_from_analysis(&an, &pat, err);
+        st = sq_pattern_from_analysis(f, &an, &pat, err);
         sq_field_analysis_free(&an);
         SQ_TRY(st);
+        if (pat.ndegenerate && !quiet)
+            fprintf(stderr,
+                    "semquad: note: %d degenerate singular point%s of the guiding field (|index| "
+                    "> 1) split into elementary points\n",
+                    pat.ndegenerate, pat.ndegenerate == 1 ? "" : "s");
     } else {
         SQ_TRY(sq_pattern_read(sing, &pat, err));
     }
@@ -48,8 +53,7 @@ static sq_status field_htheta(const char *path, int face, const cad_face *f,
                ht.npoints, ht.npoints == 1 ? "" : "s");
         for (int k = 0; k < ht.npoints; k++)
             printf("    (%.9g, %.9g) valence %d %s: jump %.12f (error %.2e)\n", ht.points[k].x,
-                   ht.points[k].y, ht.points[k].valence,
-                   ht.points[k].origin == SQ_ORIGIN_IMPOSED ? "imposed" : "critical-point",
+                   ht.points[k].y, ht.points[k].valence, sq_origin_name(ht.points[k].origin),
                    ht.points[k].jump, ht.points[k].jump - ht.points[k].c);
         for (int l = 0; l < ht.nloops; l++) {
             const sq_htheta_loop *L = &ht.loops[l];

@@ -51,6 +51,10 @@ sq_status sq_cmd_layout(int argc, char **argv, sq_error *err)
     if (note && !args.quiet) fprintf(stderr, "semquad: note: %s\n", note);
     sq_layout_result r;
     sq_status st = sq_layout_run(f, &opt, &r, err);
+    char split[256];
+    if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && !args.quiet &&
+        sq_layout_note(&r, split, sizeof split))
+        fprintf(stderr, "semquad: note: %s\n", split);
     /* an invalid layout is still drawn and reported, so it can be looked at */
     sq_status out = SQ_OK;
     if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && args.svg)

@@ -3,13 +3,27 @@
 #include "field.h"
 #include "locate.h"
 
+#include <complex.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
-#define NEWTON_MAX_IT 60
+#define NEWTON_MAX_IT 120
 #define NEWTON_MAX_HOPS 32
 #define FLAG_TOL 1e-6 /* |(u, v)| is 1 on the boundary */
+/* Newton converges only linearly (factor (m-1)/m) to a zero of
+ * multiplicity m and then wanders at the round-off floor of (u, v): an
+ * iterate with |(u, v)| below STALL_RES counts as converged. */
+#define STALL_RES 1e-13
+/* Roots closer than this (times the element size) are one zero: under
+ * round-off a zero of multiplicity m splits into up to m roots about
+ * (round-off)^(1/m) apart (1e-4 of the element size for m = 4). */
+#define CLUSTER_REL 1e-2
+/* Roots closer to each other than this times their distance to the
+ * boundary are one singular point (a cluster). */
+#define CLUSTER_BOUNDARY_REL 0.05
+/* samples of (u, v) on the circle fitting a degenerate zero's expansion */
+#define FIT_SAMPLES 256
 
 sq_status sq_face_boundary_distance(const cad_face *face, const double p[2], double *dist,
                                     sq_error *err)
@@ -92,11 +106,14 @@ static int flag_element(const sem_field *f, int e, int S, double best[2])
  * Returns 0 on convergence. */
 static int newton_local(const sem_field *f, int e, double *r, double *s)
 {
+    double best = HUGE_VAL, br = *r, bs = *s;
     for (int it = 0; it < NEWTON_MAX_IT; it++) {
         double uv[2], dr[2], ds[2];
         sem_field_eval_ref(f, e, *r, *s, uv, dr, ds);
+        double res = hypot(uv[0], uv[1]);
+        if (res < best) best = res, br = *r, bs = *s;
         double det = dr[0] * ds[1] - ds[0] * dr[1];
-        if (det == 0.0 || !isfinite(det)) return 1;
+        if (det == 0.0 || !isfinite(det)) break;
         double delta_r = -(ds[1] * uv[0] - ds[0] * uv[1]) / det;
         double delta_s = -(-dr[1] * uv[0] + dr[0] * uv[1]) / det;
         double len = hypot(delta_r, delta_s);
@@ -109,7 +126,8 @@ static int newton_local(const sem_field *f, int e, double *r, double *s)
         if (fabs(*r) > 3.0 || fabs(*s) > 3.0) return 1;
         if (len < 1e-14) return 0;
     }
-    return 1;
+    *r = br, *s = bs;
+    return best < STALL_RES ? 0 : 1;
 }
 
 /* A root of element e's polynomial from (r, s); if it lies outside e, the
@@ -150,6 +168,51 @@ static double element_size(const sem_tri_mesh *m, int e)
     return sqrt(0.5 * fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])));
 }
 
+/* Fourier coefficient k of w = u + iv on the circle of radius rho around c. */
+static sq_status circle_mode(const sq_guiding_field *g, const double c[2], double rho, int k,
+                             double complex *a, sq_error *err)
+{
+    int elem = -1;
+    *a = 0.0;
+    for (int j = 0; j < FIT_SAMPLES; j++) {
+        double t = 2.0 * M_PI * j / FIT_SAMPLES, x[2] = {c[0] + rho * cos(t), c[1] + rho * sin(t)};
+        double uv[2];
+        if (sq_guiding_field_eval(g, x, &elem, uv, NULL))
+            return SQ_FAIL(err, SQ_ERR_INTERNAL, "fit circle around (%g, %g) leaves the face", c[0],
+                           c[1]);
+        *a += (uv[0] + I * uv[1]) * cexp(-I * (double)k * t) / FIT_SAMPLES;
+    }
+    return SQ_OK;
+}
+
+/* A zero of index m, |m| >= 2: w ≈ c (z − z0)^m (m > 0) or
+ * c conj(z − z0)^|m| (m < 0).  On a circle of radius rho around zc
+ * (δ = z0 − zc), w's modes ±|m| and ±(|m| − 1) are c rho^|m| and
+ * −|m| c δ rho^(|m|−1) (δ conjugated for m < 0) whatever the higher
+ * terms: z0 is the centroid of the roots of the truncated expansion
+ * (Vieta), which round-off does not move even where it splits the zero. */
+static sq_status fit_degenerate(const sq_guiding_field *g, double c[2], double rho, int m,
+                                double coef[2], sq_error *err)
+{
+    const int n = abs(m), sg = m > 0 ? 1 : -1;
+    double complex am = 0.0, am1 = 0.0;
+    for (int it = 0; it < 3; it++) {
+        SQ_TRY(circle_mode(g, c, rho, sg * n, &am, err));
+        SQ_TRY(circle_mode(g, c, rho, sg * (n - 1), &am1, err));
+        if (cabs(am) == 0.0) break;
+        double complex d = -am1 * rho / (n * am);
+        if (sg < 0) d = conj(d);
+        c[0] += creal(d);
+        c[1] += cimag(d);
+        if (cabs(d) < 1e-12 * rho) break;
+    }
+    SQ_TRY(circle_mode(g, c, rho, sg * n, &am, err));
+    am /= pow(rho, n);
+    coef[0] = creal(am);
+    coef[1] = cimag(am);
+    return SQ_OK;
+}
+
 sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *face,
                                   const sq_face_info *info, sq_critical_point **pts, int *npts,
                                   sq_error *err)
@@ -172,7 +235,7 @@ sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *fac
             sem_locator_map(loc, er, rr, sr, x, NULL);
             int dup = 0;
             for (int q = 0; q < n && !dup; q++)
-                dup = hypot(p[q].x - x[0], p[q].y - x[1]) < 1e-5 * element_size(m, er);
+                dup = hypot(p[q].x - x[0], p[q].y - x[1]) < CLUSTER_REL * element_size(m, er);
             if (dup) continue;
             if (n == cap) {
                 sq_critical_point *np = realloc(p, sizeof *p * (size_t)(cap *= 2));
@@ -189,22 +252,62 @@ sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *fac
             n++;
         }
     }
-    /* indices on circles that hold no other point and stay in the face */
+    for (int q = 0; q < n && st == SQ_OK; q++) {
+        const double c[2] = {p[q].x, p[q].y};
+        st = sq_face_boundary_distance(face, c, &p[q].dist_boundary, err);
+    }
+    /* clusters: a zero of multiplicity m that the discretization error
+     * splits into m simple roots (the disc's z^4 at P = 4: four roots 0.01
+     * apart) is one singular point at the layout's scale */
+    double *spread = calloc((size_t)n + 1, sizeof *spread);
+    if (st == SQ_OK && !spread) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int q = 0; q < n && st == SQ_OK; q++) {
+        double sx = p[q].x, sy = p[q].y;
+        int cnt = 1;
+        for (int o = q + 1; o < n; o++) {
+            double d = hypot(p[o].x - p[q].x, p[o].y - p[q].y);
+            if (d >= CLUSTER_BOUNDARY_REL * fmin(p[q].dist_boundary, p[o].dist_boundary)) continue;
+            sx += p[o].x, sy += p[o].y, cnt++;
+            spread[q] = fmax(spread[q], d);
+            p[o--] = p[--n]; /* drop o, look at the one moved there */
+        }
+        if (cnt > 1) {
+            const double c[2] = {sx / cnt, sy / cnt};
+            int e;
+            double r, s;
+            if (!sem_locator_find(loc, c, p[q].elem, &e, &r, &s))
+                p[q].x = c[0], p[q].y = c[1], p[q].elem = e, p[q].r = r, p[q].s = s;
+            st = sq_face_boundary_distance(face, c, &p[q].dist_boundary, err);
+        }
+    }
+    /* indices on circles that hold no other point and stay in the face (and
+     * enclose a cluster) */
     for (int q = 0; q < n && st == SQ_OK; q++) {
         double c[2] = {p[q].x, p[q].y}, rho = 0.25 * element_size(m, p[q].elem);
-        st = sq_face_boundary_distance(face, c, &p[q].dist_boundary, err);
-        if (st != SQ_OK) break;
         p[q].near_boundary = p[q].dist_boundary < SQ_NEAR_BOUNDARY_REL * diag;
         rho = fmin(rho, 0.5 * p[q].dist_boundary);
         for (int o = 0; o < n; o++)
             if (o != q) rho = fmin(rho, 0.4 * hypot(p[o].x - c[0], p[o].y - c[1]));
+        rho = fmax(rho, 2.5 * spread[q]);
         if (p[q].near_boundary) {
             p[q].index = 0; /* no circle fits: reported with its distance */
         } else {
             st = sq_field_winding(g, c, rho, &p[q].index, err);
         }
         p[q].valence = 4 - p[q].index;
+        if (st == SQ_OK && abs(p[q].index) > 1) {
+            st = fit_degenerate(g, c, rho, p[q].index, p[q].coef, err);
+            double r, s, uv[2];
+            int e;
+            if (st == SQ_OK && !sem_locator_find(loc, c, p[q].elem, &e, &r, &s)) {
+                sem_field_eval_ref(g->uv, e, r, s, uv, NULL, NULL);
+                p[q].x = c[0], p[q].y = c[1], p[q].elem = e, p[q].r = r, p[q].s = s;
+                p[q].residual = hypot(uv[0], uv[1]);
+                st = sq_face_boundary_distance(face, c, &p[q].dist_boundary, err);
+            }
+        }
     }
+    free(spread);
     if (st != SQ_OK) {
         free(p);
         return st;

@@ -10,10 +10,20 @@
  *     element is mapped to the physical plane and continued in the element
  *     that contains it (NekMesh drops such roots), so each root is found in
  *     the element that holds it;
- *  3. merge roots found more than once (shared edges and vertices);
+ *  3. merge roots found more than once (shared edges and vertices) or
+ *     closer than 1e-2 of the element size (round-off splits a zero of
+ *     multiplicity m into m roots, and Newton converges only linearly to
+ *     it: an iterate at the round-off floor of (u, v) is accepted); roots
+ *     closer to each other than 0.05 x their distance to the boundary are
+ *     one point at their mean (the discretization error splits a multiple
+ *     zero too: the disc's z^4 into four roots 0.01 apart at P = 4), its
+ *     index taken on a circle enclosing them;
  *  4. index = winding number of (u, v) on a small circle around the point
  *     (unwrapped atan2, sampled until every step turns less than π/2);
- *     valence V = 4 - index (eq. 13, Table 1), indices ±2 included. */
+ *     valence V = 4 - index (eq. 13, Table 1), indices ±2 included;
+ *  5. a zero of |index| > 1 (e.g. the disc's (u, v) ≈ z^4) is centred and
+ *     its local expansion fitted from the Fourier modes of (u, v) on that
+ *     circle (see coef), for splitting (degenerate_split.h). */
 #ifndef SQ_CRITICAL_POINTS_H
 #define SQ_CRITICAL_POINTS_H
 
@@ -28,6 +38,10 @@ typedef struct {
     double dist_boundary; /* distance to the face's boundary */
     int near_boundary;    /* closer than SQ_NEAR_BOUNDARY_REL * face size */
     double residual;      /* |(u, v)| at the point */
+    /* |index| > 1 (a degenerate zero): c of u + iv ≈ c (z − z0)^index, or
+     * c conj(z − z0)^|index| for a negative index, fitted on the index
+     * circle, which also moves (x, y) to the zero's centre; else 0 */
+    double coef[2];
 } sq_critical_point;
 
 /* Relative distance (to the face's bounding-box diagonal) under which a

@@ -28,6 +28,7 @@ void sq_htheta_free(sq_htheta *f)
     sq_face_info_free(&f->info);
     free(f->points);
     free(f->vloops);
+    free(f->trace_size);
     free(f->loops);
     memset(f, 0, sizeof *f);
 }
@@ -114,6 +115,31 @@ static sq_status loop_checks(const cad_face *face, sq_htheta *f, sq_error *err)
     return SQ_OK;
 }
 
+/* Element sizes with the grading at the first np extra points (the imposed
+ * points) undone: sqrt(area) scaled by the refinement's target size without
+ * those points over the target size with them, at the centroid (the
+ * grading at singular corners is kept: the guiding field has it too). */
+static sq_status trace_sizes(const sem_tri_mesh *m, const sq_tri_options *tri, double size, int np,
+                             double **out, sq_error *err)
+{
+    double *t = malloc(sizeof *t * ((size_t)m->ntris + 1));
+    if (!t) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    sq_tri_options corners = *tri;
+    corners.nextra = tri->nextra - np;
+    corners.extra_xy = tri->extra_xy + 2 * np;
+    for (int e = 0; e < m->ntris; e++) {
+        const double *a = &m->vxy[2 * m->tri[3 * e]], *b = &m->vxy[2 * m->tri[3 * e + 1]],
+                     *c = &m->vxy[2 * m->tri[3 * e + 2]];
+        const double g[2] = {(a[0] + b[0] + c[0]) / 3.0, (a[1] + b[1] + c[1]) / 3.0};
+        const double area =
+            0.5 * fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0]));
+        t[e] =
+            sqrt(area) * sq_tri_graded_size(&corners, size, g) / sq_tri_graded_size(tri, size, g);
+    }
+    *out = t;
+    return SQ_OK;
+}
+
 sq_status sq_htheta_compute(const cad_face *face, const sq_pattern *pattern,
                             const sq_htheta_options *opt, sq_htheta *out, sq_error *err)
 {
@@ -171,6 +197,7 @@ sq_status sq_htheta_compute(const cad_face *face, const sq_pattern *pattern,
     if ((st = sq_triangulate(face, &tri, &out->tri, err)) != SQ_OK) goto done;
     const sem_tri_mesh *m = out->tri.mesh;
     if ((st = sem_locator_create(m, &out->loc, err)) != SQ_OK) goto done;
+    if ((st = trace_sizes(m, &tri, size, np, &out->trace_size, err)) != SQ_OK) goto done;
     if ((st = sq_mesh_vertex_loops(face, m, &out->vloops, err)) != SQ_OK) goto done;
     const double diag = hypot(out->info.bbox[2] - out->info.bbox[0],
                               out->info.bbox[3] - out->info.bbox[1]);
@@ -252,13 +279,7 @@ static int ht_direction(void *ctx, const double x[2], int *elem, double *theta)
     return sq_htheta_eval(ctx, x, elem, NULL, NULL, theta, NULL);
 }
 
-static double ht_element_size(void *ctx, int e)
-{
-    const sem_tri_mesh *m = ((const sq_htheta *)ctx)->tri.mesh;
-    const double *a = &m->vxy[2 * m->tri[3 * e]], *b = &m->vxy[2 * m->tri[3 * e + 1]],
-                 *c = &m->vxy[2 * m->tri[3 * e + 2]];
-    return sqrt(0.5 * fabs((b[0] - a[0]) * (c[1] - a[1]) - (b[1] - a[1]) * (c[0] - a[0])));
-}
+static double ht_element_size(void *ctx, int e) { return ((const sq_htheta *)ctx)->trace_size[e]; }
 
 static double ht_size(void *ctx, const double x[2], int *elem)
 {

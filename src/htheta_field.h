@@ -51,6 +51,10 @@ typedef struct {
     sq_triangulation tri;
     sem_locator *loc;
     int *vloops; /* per mesh vertex: boundary loop or -1 */
+    /* per element: its size with the spoke grading at the imposed points
+     * undone (what the tracer ties its step, capture and meeting radii to;
+     * see sq_htheta_cross_field) */
+    double *trace_size;
     sq_h_field h;
     sq_theta_field theta;
     int nloops;
@@ -76,7 +80,14 @@ sq_status sq_htheta_check_alignment(const sq_htheta *f, int allow_misaligned, sq
 int sq_htheta_eval(const sq_htheta *f, const double x[2], int *elem, double *H, double gH[2],
                    double *theta, double gtheta[2]);
 
-/* The cross field {θ + kπ/2} with size e^H (eq. 16, 21). */
+/* The cross field {θ + kπ/2} with size e^H (eq. 16, 21).  Its element
+ * sizes are trace_size: the graded spokes resolve H's logarithmic and θ's
+ * angular singularity for the solves only; left in, they shrink the
+ * tracer's capture radius and meeting distance around exactly the points
+ * where separatrices end and meet, 5-40 times below the guiding field's
+ * (whose triangulation is not graded at interior points), and the two-step
+ * pipeline changes the layout's topology (nautilus: 27 patches against 19).
+ * The tracer limits its own step near singular points (trace.h). */
 sq_cross_field sq_htheta_cross_field(const sq_htheta *f);
 
 /* Per-patch parametrization gradients (eqs. 18–20): ∇U = e^{−H}(cos θ,

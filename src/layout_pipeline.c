@@ -1,5 +1,8 @@
 #include "layout_pipeline.h"
 
+#include "degenerate_split.h"
+
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -24,18 +27,14 @@ void sq_layout_result_free(sq_layout_result *r)
 }
 
 /* The guiding field's pattern: its critical points and corner valences. */
-static sq_status guiding_pattern(sq_layout_result *out, sq_error *err)
+static sq_status guiding_pattern(const cad_face *face, sq_layout_result *out, sq_error *err)
 {
     const sq_field_analysis *a = &out->analysis;
-    out->sing = calloc((size_t)a->npoints + 1, sizeof *out->sing);
     out->vertex_quads = calloc((size_t)a->info.nvertices + 1, sizeof *out->vertex_quads);
-    if (!out->sing || !out->vertex_quads) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (!out->vertex_quads) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     /* Regular points (index 0) carry no separatrix; points on the boundary
      * are reported by the field stage but cannot start a layout. */
-    for (int k = 0; k < a->npoints; k++)
-        if (a->points[k].valence != 4 && !a->points[k].near_boundary)
-            out->sing[out->nsing++] = (sq_singularity){a->points[k].x, a->points[k].y,
-                                                       a->points[k].valence, SQ_ORIGIN_CRITICAL};
+    SQ_TRY(sq_elementary_points(face, a, &out->sing, &out->nsing, NULL, err));
     for (int k = 0; k < a->info.nvertices; k++) out->vertex_quads[k] = a->corners[k].valence;
     out->info = &a->info;
     out->field = (sq_field_summary){"guiding", a->field.method, a->field.order,
@@ -44,15 +43,16 @@ static sq_status guiding_pattern(sq_layout_result *out, sq_error *err)
     return SQ_OK;
 }
 
-/* The imposed pattern's H/θ field (Jezdimirović 2021 §4-5). */
+/* The H/θ field (Jezdimirović 2021 §4-5) of the pattern file, or of the
+ * guiding field's natural pattern (out->analysis, already computed). */
 static sq_status htheta_pattern(const cad_face *face, const sq_layout_options *opt,
-                                sq_layout_result *out, sq_error *err)
+                                int from_analysis, sq_layout_result *out, sq_error *err)
 {
     sq_pattern pat = {0};
     sq_status st;
-    if (!strcmp(opt->singularities, "natural")) {
-        SQ_TRY(sq_field_analyse(face, &opt->field, &out->analysis, err));
-        st = sq_pattern_from_analysis(&out->analysis, &pat, err);
+    if (from_analysis) {
+        st = sq_pattern_from_analysis(face, &out->analysis, &pat, err);
+        out->ndegenerate = pat.ndegenerate;
     } else {
         st = sq_pattern_read(opt->singularities, &pat, err);
     }
@@ -72,6 +72,11 @@ static sq_status htheta_pattern(const cad_face *face, const sq_layout_options *o
     out->info = &h->info;
     out->field = (sq_field_summary){"H-theta", SEM_CG, opt->htheta.order, h->tri.mesh->ntris,
                                     0, h->t_triangulate, h->t_solve, 0.0};
+    if (from_analysis) { /* the guiding field's stage ran first */
+        out->field.t_triangulate += out->analysis.t_triangulate;
+        out->field.t_solve += out->analysis.t_solve;
+        out->field.t_critical = out->analysis.t_critical;
+    }
     return SQ_OK;
 }
 
@@ -79,14 +84,18 @@ sq_status sq_layout_run(const cad_face *face, const sq_layout_options *opt, sq_l
                         sq_error *err)
 {
     memset(out, 0, sizeof *out);
-    sq_status st;
+    sq_status st = SQ_OK;
     sq_cross_field field;
-    if (opt->singularities) {
-        st = htheta_pattern(face, opt, out, err);
-        field = sq_htheta_cross_field(&out->htheta);
-    } else {
+    const int natural = opt->singularities && !strcmp(opt->singularities, "natural");
+    if (!opt->singularities || natural)
         st = sq_field_analyse(face, &opt->field, &out->analysis, err);
-        if (st == SQ_OK) st = guiding_pattern(out, err);
+    /* a degenerate zero of the guiding field is split into elementary
+     * points, whose layout the H/θ field of that pattern gives */
+    if (st == SQ_OK && (opt->singularities || sq_has_degenerate_point(&out->analysis))) {
+        st = htheta_pattern(face, opt, !opt->singularities || natural, out, err);
+        field = sq_htheta_cross_field(&out->htheta);
+    } else if (st == SQ_OK) {
+        st = guiding_pattern(face, out, err);
         field = sq_guiding_cross_field(&out->analysis.field);
     }
     if (st != SQ_OK) {
@@ -105,4 +114,17 @@ sq_status sq_layout_run(const cad_face *face, const sq_layout_options *opt, sq_l
     out->valid = st == SQ_OK;
     if (st != SQ_OK && st != SQ_ERR_LAYOUT) sq_layout_result_free(out);
     return st;
+}
+
+int sq_layout_note(const sq_layout_result *r, char *buf, size_t n)
+{
+    if (r->ndegenerate == 0) return 0;
+    int nsplit = 0;
+    for (int k = 0; k < r->nsing; k++) nsplit += r->sing[k].origin == SQ_ORIGIN_SPLIT;
+    snprintf(buf, n,
+             "%d degenerate singular point%s of the guiding field (|index| > 1) split into %d "
+             "elementary points at %g x the distance to the boundary; layout traced on the "
+             "H/theta field of that pattern",
+             r->ndegenerate, r->ndegenerate == 1 ? "" : "s", nsplit, SQ_SPLIT_FRACTION);
+    return 1;
 }

@@ -9,6 +9,8 @@
 #include "htheta_field.h"
 #include "layout.h"
 
+#include <stddef.h>
+
 typedef struct {
     sq_field_options field;   /* the guiding field (also for `natural`) */
     sq_trace_options trace;
@@ -33,6 +35,8 @@ void sq_layout_options_default(sq_layout_options *opt);
 
 typedef struct {
     sq_field_analysis analysis; /* guiding field (zeroed for a pattern file) */
+    int ndegenerate;            /* degenerate critical points split (degenerate_split.h):
+                                   the layout is then traced on the H/θ field */
     sq_htheta htheta;           /* H/θ path only */
     const sq_face_info *info;   /* the face, from whichever stage ran */
     sq_field_summary field;
@@ -52,5 +56,9 @@ typedef struct {
 sq_status sq_layout_run(const cad_face *face, const sq_layout_options *opt, sq_layout_result *out,
                         sq_error *err);
 void sq_layout_result_free(sq_layout_result *r); /* frees, zeroes the struct */
+
+/* A line for the user when the pattern is not the one asked for
+ * (degenerate critical points split); returns 0 (buf untouched) if none. */
+int sq_layout_note(const sq_layout_result *r, char *buf, size_t n);
 
 #endif

@@ -1,6 +1,7 @@
 #include "pattern.h"
 
 #include "critical_points.h"
+#include "degenerate_split.h"
 
 #include <ctype.h>
 #include <errno.h>
@@ -180,24 +181,17 @@ sq_status sq_pattern_read(const char *path, sq_pattern *out, sq_error *err)
     return st;
 }
 
-sq_status sq_pattern_from_analysis(const sq_field_analysis *a, sq_pattern *out, sq_error *err)
+sq_status sq_pattern_from_analysis(const cad_face *face, const sq_field_analysis *a,
+                                   sq_pattern *out, sq_error *err)
 {
     memset(out, 0, sizeof *out);
-    int n = a->npoints, nv = a->info.nvertices;
-    out->points = malloc(sizeof *out->points * (size_t)(n + 1));
-    out->lines = calloc((size_t)n + 1, sizeof *out->lines);
+    int nv = a->info.nvertices;
+    SQ_TRY(sq_elementary_points(face, a, &out->points, &out->npoints, &out->ndegenerate, err));
+    out->lines = calloc((size_t)out->npoints + 1, sizeof *out->lines);
     out->vertex_quads = malloc(sizeof *out->vertex_quads * (size_t)(nv + 1));
-    if (!out->points || !out->lines || !out->vertex_quads) {
+    if (!out->lines || !out->vertex_quads) {
         sq_pattern_free(out);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    }
-    for (int k = 0; k < n; k++) {
-        if (a->points[k].near_boundary) continue;
-        sq_singularity *s = &out->points[out->npoints++];
-        s->x = a->points[k].x;
-        s->y = a->points[k].y;
-        s->valence = a->points[k].valence;
-        s->origin = SQ_ORIGIN_CRITICAL;
     }
     out->nvertex_quads = nv;
     for (int k = 0; k < nv; k++) out->vertex_quads[k] = a->corners[k].valence;

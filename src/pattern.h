@@ -31,6 +31,7 @@ typedef struct {
      * with them (natural: the guiding field's corner valences), else NULL */
     int nvertex_quads;
     int *vertex_quads;
+    int ndegenerate; /* natural: degenerate critical points split (degenerate_split.h) */
 } sq_pattern;
 
 /* Parse pattern text; `name` is used in messages.  SQ_ERR_PATTERN naming
@@ -41,9 +42,11 @@ sq_status sq_pattern_parse(const char *text, const char *name, sq_pattern *out, 
 sq_status sq_pattern_read(const char *path, sq_pattern *out, sq_error *err);
 
 /* The `natural` pattern: the guiding field's interior critical points
- * (origin "critical-point"; points flagged on the boundary are left out)
- * and its corner valences (Marcon 2019, eq. 15). */
-sq_status sq_pattern_from_analysis(const sq_field_analysis *a, sq_pattern *out, sq_error *err);
+ * (origin "critical-point"; points flagged on the boundary are left out;
+ * a zero of |index| > 1 split into elementary points, origin "split", see
+ * degenerate_split.h) and its corner valences (Marcon 2019, eq. 15). */
+sq_status sq_pattern_from_analysis(const cad_face *face, const sq_field_analysis *a,
+                                   sq_pattern *out, sq_error *err);
 
 void sq_pattern_free(sq_pattern *p); /* frees, zeroes the struct */
 

@@ -6,7 +6,9 @@
 typedef enum {
     SQ_ORIGIN_CRITICAL = 0, /* critical point of the guiding field */
     SQ_ORIGIN_IMPOSED,      /* from the user's pattern file */
-    SQ_ORIGIN_MIDPOINT      /* inserted by a layout repair (Marcon midpoint division) */
+    SQ_ORIGIN_MIDPOINT,     /* inserted by a layout repair (Marcon midpoint division) */
+    SQ_ORIGIN_SPLIT         /* one of the elementary points a degenerate critical point
+                               of the guiding field was split into (degenerate_split.h) */
 } sq_origin;
 
 typedef struct {
@@ -15,6 +17,7 @@ typedef struct {
     sq_origin origin;
 } sq_singularity;
 
-const char *sq_origin_name(sq_origin o); /* "critical-point", "imposed", "midpoint" */
+const char *sq_origin_name(sq_origin o); /* "critical-point", "imposed", "midpoint",
+                                            "split" */
 
 #endif

@@ -39,8 +39,14 @@
 /* Two lines that are one separatrix traced from both ends (each front runs
  * back along the other line, or past its start, in the opposite direction)
  * meet within max(merge_distance, SQ_TRACE_PASS_STEPS) steps, even with
- * normal merging (Marcon 2019 §3.3: they would otherwise pass each other). */
-#define SQ_TRACE_PASS_STEPS 4.0
+ * normal merging (Marcon 2019 §3.3: they would otherwise pass each other).
+ * Two singular points joined by one separatrix are such a pair, and their
+ * fronts may pass each other by several steps: on nautilus (points 1 and 2)
+ * they meet from 3.9 steps on the guiding field and from 4.7 on the H/θ
+ * field of the same points (0.036-0.044 apart, steps 0.008-0.011); 6 keeps
+ * both a quarter above their threshold, so the two-step pipeline keeps the
+ * guiding layout's topology (19 patches; at 4: 19 against 27, t416). */
+#define SQ_TRACE_PASS_STEPS 6.0
 
 typedef struct {
     double step_rel;       /* step = step_rel * local element size (default 0.05) */

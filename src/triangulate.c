@@ -50,23 +50,27 @@ static sq_status bdisc_insert(bdisc *b, int e, double s, sq_error *err)
 }
 
 typedef struct {
-    double size, extra_size, growth;
-    int nextra;
-    const double *extra_xy;
+    const sq_tri_options *opt;
+    double size;
 } size_ctx;
 
-/* Graded size around the extra points: extra_size there, growing linearly
- * with distance (geometric layers), capped by the global size. */
-static double graded_size(const double xy[2], void *p)
+double sq_tri_graded_size(const sq_tri_options *opt, double size, const double xy[2])
 {
-    const size_ctx *c = p;
-    double h = c->size;
-    for (int i = 0; i < c->nextra; i++) {
-        double d = hypot(xy[0] - c->extra_xy[2 * i], xy[1] - c->extra_xy[2 * i + 1]);
-        double hi = c->extra_size + c->growth * d;
+    const double h0 = opt->extra_size > 0.0 ? opt->extra_size : size / 8.0;
+    const double growth = opt->extra_growth > 0.0 ? opt->extra_growth : 0.5;
+    double h = size;
+    for (int i = 0; i < opt->nextra; i++) {
+        double d = hypot(xy[0] - opt->extra_xy[2 * i], xy[1] - opt->extra_xy[2 * i + 1]);
+        double hi = h0 + growth * d;
         if (hi < h) h = hi;
     }
     return h;
+}
+
+static double graded_size(const double xy[2], void *p)
+{
+    const size_ctx *c = p;
+    return sq_tri_graded_size(c->opt, c->size, xy);
 }
 
 /* Step 1 of the design: equidistribute rho(s) = 1/size(x(s)) + |k(s)|/max_turn,
@@ -406,8 +410,7 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
     SQ_TRY(sq_face_info_compute(face, &info, err));
     double size = opt->size > 0.0 ? opt->size : sqrt(fabs(info.area)) / 3.0;
     sq_face_info_free(&info);
-    size_ctx sc = {size, opt->extra_size > 0.0 ? opt->extra_size : size / 8.0,
-                   opt->extra_growth > 0.0 ? opt->extra_growth : 0.5, opt->nextra, opt->extra_xy};
+    size_ctx sc = {opt, size};
     bdisc b = {0};
     bpoly p = {0};
     cad_cdt_output o = {0};

@@ -33,6 +33,11 @@ typedef struct {
 
 void sq_tri_options_default(sq_tri_options *opt);
 
+/* The edge length the refinement aims at at xy: the resolved size bound
+ * `size`, graded towards opt's extra points (extra_size there, growing at
+ * extra_growth with the distance). */
+double sq_tri_graded_size(const sq_tri_options *opt, double size, const double xy[2]);
+
 typedef struct {
     sem_tri_mesh *mesh;  /* btag = CAD edge index of boundary element edges */
     double *bs;          /* 6*ntris: arc lengths (start, end) of each element

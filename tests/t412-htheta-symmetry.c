@@ -56,7 +56,7 @@ int main(void)
     sq_field_analysis an;
     SQ_TEST_OK(sq_field_analyse(f, &fo, &an, &err), err);
     sq_pattern p;
-    SQ_TEST_OK(sq_pattern_from_analysis(&an, &p, &err), err);
+    SQ_TEST_OK(sq_pattern_from_analysis(f, &an, &p, &err), err);
     sq_field_analysis_free(&an);
     const double c[2] = {0.5, sqrt(3.0) / 6.0};
     fails += sq_check_int("triangle", "natural points", p.npoints, 1);

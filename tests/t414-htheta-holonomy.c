@@ -29,7 +29,7 @@ int main(void)
     sq_field_options_default(&fo);
     sq_field_analysis an;
     SQ_TEST_OK(sq_field_analyse(f, &fo, &an, &err), err);
-    SQ_TEST_OK(sq_pattern_from_analysis(&an, &p, &err), err);
+    SQ_TEST_OK(sq_pattern_from_analysis(f, &an, &p, &err), err);
     sq_field_analysis_free(&an);
     fails += sq_check_int("natural", "points", p.npoints, 4);
     SQ_TEST_OK(sq_htheta_compute(f, &p, &o, &ht, &err), err);

@@ -27,7 +27,7 @@ static int check(const char *file, const char *pattern)
         sq_field_options_default(&fo);
         sq_field_analysis an;
         SQ_TEST_OK(sq_field_analyse(f, &fo, &an, &err), err);
-        SQ_TEST_OK(sq_pattern_from_analysis(&an, &p, &err), err);
+        SQ_TEST_OK(sq_pattern_from_analysis(f, &an, &p, &err), err);
         sq_field_analysis_free(&an);
     }
     sq_htheta_options o;

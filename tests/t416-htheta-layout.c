@@ -4,13 +4,66 @@
  * patches quads, each valence-V point a corner of exactly V patches, areas
  * summing to the face's); and the two-step pipeline (natural pattern of
  * the guiding field -> H/θ) reproduces the guiding field's layout topology
- * on half_disc, quarter_circle and square_hole. */
+ * on half_disc, quarter_circle, square_hole and nautilus: the same singular
+ * points, separatrices and patches, and the same patch-corner incidence
+ * (each patch's singular points and face vertices by id, and its numbers
+ * of boundary feet and crossings). */
 #include "layout_pipeline.h"
 #include "test_util.h"
 
 #include <gsl/gsl_errno.h>
 
-static int run(const char *file, const char *pattern, sq_layout_stats *stats, int *nsing)
+#define SIG_LEN 8192
+
+static int cmp_str(const void *a, const void *b)
+{
+    return strcmp(*(char *const *)a, *(char *const *)b);
+}
+
+static int cmp_int(const void *a, const void *b)
+{
+    return *(const int *)a - *(const int *)b;
+}
+
+/* The layout's patch-corner incidence as text: per patch "S<ids> C<ids>
+ * F<feet> X<crossings>" (ids sorted), patches sorted, joined by ';'. */
+static void incidence(const sq_layout *L, char *sig, size_t n)
+{
+    char(*pat)[256] = calloc((size_t)L->npatches + 1, sizeof *pat);
+    char **ptr = calloc((size_t)L->npatches + 1, sizeof *ptr);
+    for (int p = 0; p < L->npatches; p++) {
+        const sq_layout_patch *P = &L->patches[p];
+        int sing[64], corner[64], ns = 0, nc = 0, feet = 0, cross = 0;
+        for (int k = 0; k < P->ncorners; k++) {
+            const sq_layout_node *q = &L->nodes[P->corners[k]];
+            if (q->kind == SQ_LNODE_SINGULAR && ns < 64) sing[ns++] = q->id;
+            else if (q->kind == SQ_LNODE_CORNER && nc < 64) corner[nc++] = q->id;
+            else if (q->kind == SQ_LNODE_FOOT) feet++;
+            else cross++;
+        }
+        qsort(sing, (size_t)ns, sizeof *sing, cmp_int);
+        qsort(corner, (size_t)nc, sizeof *corner, cmp_int);
+        size_t len = 0;
+        len += (size_t)snprintf(pat[p] + len, sizeof pat[p] - len, "S");
+        for (int k = 0; k < ns; k++)
+            len += (size_t)snprintf(pat[p] + len, sizeof pat[p] - len, "%d,", sing[k]);
+        len += (size_t)snprintf(pat[p] + len, sizeof pat[p] - len, " C");
+        for (int k = 0; k < nc; k++)
+            len += (size_t)snprintf(pat[p] + len, sizeof pat[p] - len, "%d,", corner[k]);
+        snprintf(pat[p] + len, sizeof pat[p] - len, " F%d X%d", feet, cross);
+        ptr[p] = pat[p];
+    }
+    qsort(ptr, (size_t)L->npatches, sizeof *ptr, cmp_str);
+    size_t len = 0;
+    sig[0] = 0;
+    for (int p = 0; p < L->npatches && len < n; p++)
+        len += (size_t)snprintf(sig + len, n - len, "%s;", ptr[p]);
+    free(ptr);
+    free(pat);
+}
+
+static int run(const char *file, const char *pattern, sq_layout_stats *stats, int *nsing,
+               char *sig)
 {
     char path[4096], pat[4096];
     sq_test_path(path, sizeof path, 0, file);
@@ -36,6 +89,7 @@ static int run(const char *file, const char *pattern, sq_layout_stats *stats, in
         sq_layout_defects_free(&d);
         *stats = r.layout.stats;
         *nsing = r.nsing;
+        incidence(&r.layout, sig, SIG_LEN);
         fails += sq_check_int(file, "quad patches", r.layout.stats.quad_patches, r.layout.stats.patches);
         double sum = 0.0;
         for (int p = 0; p < r.layout.npatches; p++) sum += r.layout.patches[p].area;
@@ -52,21 +106,24 @@ int main(void)
     gsl_set_error_handler_off();
     int fails = 0, n = 0;
     sq_layout_stats s;
+    static char sig[SIG_LEN], sig_g[SIG_LEN], sig_h[SIG_LEN];
     const char *patterns[] = {"square_v5.txt", "square_v6.txt", "square_v8.txt"};
     const int npoints[] = {8, 6, 5};
     for (int i = 0; i < 3; i++) {
-        fails += run("square.step", patterns[i], &s, &n);
+        fails += run("square.step", patterns[i], &s, &n, sig);
         fails += sq_check_int(patterns[i], "singular points traced", n, npoints[i]);
     }
-    const char *files[] = {"half_disc.step", "quarter_circle.step", "square_hole.step"};
-    for (int i = 0; i < 3; i++) {
+    const char *files[] = {"half_disc.step", "quarter_circle.step", "square_hole.step",
+                           "nautilus.step"};
+    for (int i = 0; i < 4; i++) {
         sq_layout_stats g, h;
         int ng = 0, nh = 0;
-        fails += run(files[i], NULL, &g, &ng);
-        fails += run(files[i], "natural", &h, &nh);
+        fails += run(files[i], NULL, &g, &ng, sig_g);
+        fails += run(files[i], "natural", &h, &nh, sig_h);
         fails += sq_check_int(files[i], "singular points (two-step = guiding)", nh, ng);
         fails += sq_check_int(files[i], "separatrices (two-step = guiding)", h.separatrices, g.separatrices);
         fails += sq_check_int(files[i], "patches (two-step = guiding)", h.patches, g.patches);
+        fails += sq_check_str(files[i], "patch-corner incidence (two-step = guiding)", sig_h, sig_g);
     }
     return fails ? 1 : 0;
 }

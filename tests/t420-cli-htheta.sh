@@ -3,8 +3,9 @@
 # breaking Gauss-Bonnet or with a bad line, exit 0 with VTU (H, theta), SVG
 # and a JSON report of kind H-theta otherwise; the holonomy warning names
 # the loop; semquad layout with a pattern giving an obtuse vertex one quad
-# (a boundary valence-2 point) repairs it by the valence-2 split.
-# usage: t420-cli-htheta.sh SEMQUAD EXAMPLES_DIR
+# (a boundary valence-2 point) repairs it by the valence-2 split; mesh sizes
+# follow e^H; semquad mesh on the disc splits its degenerate centre (a note
+# on stderr).  usage: t420-cli-htheta.sh SEMQUAD EXAMPLES_DIR
 set -u
 sq=$1
 ex=$2
@@ -68,4 +69,13 @@ grep -q 'valence-2 point' "$tmp/q.svg" || fail "obtuse_quad valence-2: not marke
 grep -q '"quads": *48,' "$tmp/tm.json" || fail "triangle natural mesh: not 48 quads (e^H sizes)"
 "$sq" mesh "$ex/triangle.step" --size 0.1 -q -o "$tmp/t.msh" --report "$tmp/tg.json" 2>/dev/null
 grep -q '"quads": *75,' "$tmp/tg.json" || fail "triangle guiding mesh: not 75 quads"
+
+# a degenerate critical point (the disc's index-4 centre) is split into four
+# valence-3 points, said on stderr, and meshed on their H/theta field
+"$sq" mesh "$ex/disc.step" --report "$tmp/d.json" >/dev/null 2>"$tmp/err"
+[ $? -eq 0 ] || fail "disc mesh: exit status not 0: $(cat "$tmp/err")"
+grep -q "1 degenerate singular point .* split into 4 elementary points" "$tmp/err" ||
+    fail "disc mesh: no note on the split: $(cat "$tmp/err")"
+grep -q '"irregular_interior_vertices": *4' "$tmp/d.json" || fail "disc mesh: irregular vertices"
+grep -q '"inverted": *0' "$tmp/d.json" || fail "disc mesh: inverted quads"
 exit $((fails != 0))
