@@ -989,7 +989,10 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
                 keep[i] = d < T;
             }
     }
-    if (st == SQ_OK) st = smooth(face, info, &v, keep, err);
+    /* untangling, where transfinite interpolation folded a quad */
+    int folded = 0;
+    for (int q = 0; q < v.nq && st == SQ_OK; q++) folded += !quad_valid(&v, q);
+    if (st == SQ_OK && folded) st = smooth(face, info, &v, keep, err);
     /* relaxed with the singular points free to even out their angles, then
      * held where the field put them, then not relaxed at all: the first of
      * these whose curved quads all have a positive Jacobian */

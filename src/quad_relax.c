@@ -155,9 +155,10 @@ static void corner_derivatives(const double e[4], double g[4], double H[16])
             H[4 * i + j] = (i == j ? 2.0 / D : 0.0) - (gN[i] * gD[j] + gD[i] * gN[j]) / (D * D) -
                            N * HD[4 * i + j] / (D * D) + 2.0 * N * gD[i] * gD[j] / (D * D * D);
     }
-    double lam[4], V[16];
+    double lam[4], V[16], work[64];
     memcpy(V, H, sizeof V);
-    if (LAPACKE_dsyev(LAPACK_ROW_MAJOR, 'V', 'U', 4, V, 4, lam) != 0) {
+    /* the _work variant: no allocation per corner */
+    if (LAPACKE_dsyev_work(LAPACK_COL_MAJOR, 'V', 'U', 4, V, 4, lam, work, 64) != 0) {
         memset(H, 0, sizeof(double) * 16);
         return;
     }
@@ -165,7 +166,7 @@ static void corner_derivatives(const double e[4], double g[4], double H[16])
         for (int j = 0; j < 4; j++) {
             H[4 * i + j] = 0.0;
             for (int k = 0; k < 4; k++)
-                H[4 * i + j] += V[4 * i + k] * fmax(lam[k], 0.0) * V[4 * j + k];
+                H[4 * i + j] += V[4 * k + i] * fmax(lam[k], 0.0) * V[4 * k + j];
         }
 }
 
@@ -373,7 +374,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
             memcpy(w.s, s0, sizeof(double) * (size_t)m->nv);
             break;
         }
-        int done = E - E1 < 1e-13 * E;
+        int done = E - E1 < 1e-10 * E;
         E = E1;
         if (done) break;
     }
