@@ -31,8 +31,8 @@ struct sem_locator {
     int go, ngm;
     sem_dubiner_tab tab; /* geometry order */
     double *gm;          /* 2*ngm*ntris modal geometry */
-    double *aff; /* 6*ntris: x0, y0 and J^{-1} (row-major) of the map if affine, else of the
-                    straight-sided triangle through the vertices (Newton's start) */
+    double *aff;         /* 6*ntris: x0, y0 and J^{-1} (row-major) of the map if affine, else of the
+                            straight-sided triangle through the vertices (Newton's start) */
     unsigned char *is_aff;
     double *ebox; /* 4*ntris: xmin, xmax, ymin, ymax */
     double x0, y0, cw, ch;
@@ -67,8 +67,7 @@ int sem_locator_invert(const sem_locator *loc, int e, const double xy[2], double
     const double *a = loc->aff + 6 * (size_t)e;
     const double dx = xy[0] - a[0], dy = xy[1] - a[1];
     double r = a[2] * dx + a[3] * dy, s = a[4] * dx + a[5] * dy, prev = HUGE_VAL;
-    if (!(fabs(r) < LOC_FAR && fabs(s) < LOC_FAR && isfinite(r) && isfinite(s)))
-        r = s = 1.0 / 3.0;
+    if (!(fabs(r) < LOC_FAR && fabs(s) < LOC_FAR && isfinite(r) && isfinite(s))) r = s = 1.0 / 3.0;
     for (int it = 0; it < LOC_NEWTON_MAX; ++it) {
         double x[2], J[4];
         const double det = sem_locator_map(loc, e, r, s, x, J);

@@ -154,7 +154,8 @@ sq_status lay_intersections(const sq_separatrix_set *set, double tol, lay_hit **
                      * lengths): pairs whose grown boxes are apart are skipped
                      * before the hypot calls that dominate the cost. */
                     double g = tol + eps * (fabs(r[0]) + fabs(r[1]) + fabs(s[0]) + fabs(s[1]));
-                    if (lo(p[0], p[2]) - g > hi(q[0], q[2]) || lo(q[0], q[2]) - g > hi(p[0], p[2]) ||
+                    if (lo(p[0], p[2]) - g > hi(q[0], q[2]) ||
+                        lo(q[0], q[2]) - g > hi(p[0], p[2]) ||
                         lo(p[1], p[3]) - g > hi(q[1], q[3]) || lo(q[1], q[3]) - g > hi(p[1], p[3]))
                         continue;
                     double den = r[0] * s[1] - r[1] * s[0];
