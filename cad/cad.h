@@ -103,6 +103,12 @@ double cad_face_edge_length(const cad_face *face, int edge);
 sq_status cad_face_edge_eval(const cad_face *face, int edge, double s, double xy[2],
                              double tangent[2], double *curvature, sq_error *err);
 
+/* *val = the integral of x dy - y dx (twice the signed area swept about the
+ * frame's origin) along edge `edge` from arc length s0 to s1 >= s0, both
+ * measured in the direction of travel; 0 if s1 <= s0. */
+sq_status cad_face_edge_green(const cad_face *face, int edge, double s0, double s1, double *val,
+                              sq_error *err);
+
 /* Closest point of edge `edge` to p: arc length *s and foot[2] (either may
  * be NULL); *dist its distance (may be NULL). */
 sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2], double *s,

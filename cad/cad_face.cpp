@@ -205,12 +205,19 @@ struct cad_face {
         }
         if (kappa) *kappa = n > 0 ? sg * (a[0] * b[1] - a[1] * b[0]) / (n * n * n) : 0;
     }
-    // Signed area contribution 1/2 int (x dy - y dx) along the travel.
-    double edge_area(const Edge &e) const
+    // int (x dy - y dx) along the curve forward from parameter ua to ub, on
+    // the pieces of the arc-length table (each smooth and short enough for
+    // the 10-point rule to be exact to round-off: see build_table).
+    double green_u(const Edge &e, double ua, double ub) const
     {
+        std::vector<double> br(1, ua);
+        for (size_t k = (size_t)(std::upper_bound(e.tu.begin(), e.tu.end(), ua) - e.tu.begin());
+             k < e.tu.size() && e.tu[k] < ub; ++k)
+            br.push_back(e.tu[k]);
+        br.push_back(ub);
         double sum = 0;
-        for (size_t k = 0; k + 1 < e.tu.size(); ++k) {
-            double c = 0.5 * (e.tu[k] + e.tu[k + 1]), h = 0.5 * (e.tu[k + 1] - e.tu[k]);
+        for (size_t k = 0; k + 1 < br.size(); ++k) {
+            double c = 0.5 * (br[k] + br[k + 1]), h = 0.5 * (br[k + 1] - br[k]);
             for (int i = 0; i < 10; ++i) {
                 double u = c + (i < 5 ? -h * GL_X[i] : h * GL_X[i - 5]);
                 gp_Pnt p;
@@ -219,9 +226,15 @@ struct cad_face {
                 double xy[2], v[2];
                 to2d(p, xy);
                 vec2d(d1, v);
-                sum += GL_W[i % 5] * h * 0.5 * (xy[0] * v[1] - xy[1] * v[0]);
+                sum += GL_W[i % 5] * h * (xy[0] * v[1] - xy[1] * v[0]);
             }
         }
+        return sum;
+    }
+    // Signed area contribution 1/2 int (x dy - y dx) along the travel.
+    double edge_area(const Edge &e) const
+    {
+        double sum = 0.5 * green_u(e, e.u0, e.u1);
         return e.reversed ? -sum : sum;
     }
     double loop_area(int l) const
@@ -503,6 +516,32 @@ sq_status cad_face_edge_eval(const cad_face *face, int edge, double s, double xy
         face->eval_u(e, u_of_s(e, sf), xy, tangent, curvature);
         if (xy && s == 0) xy[0] = e.start[0], xy[1] = e.start[1];
         if (xy && s == e.length) xy[0] = e.end[0], xy[1] = e.end[1];
+        return SQ_OK;
+    }
+    SQCAD_CATCH(err)
+}
+
+sq_status cad_face_edge_green(const cad_face *face, int edge, double s0, double s1, double *val,
+                              sq_error *err)
+{
+    if (!val) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_edge_green: val is NULL");
+    *val = 0;
+    if (!face) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_edge_green: face is NULL");
+    if (edge < 0 || edge >= (int)face->edges.size())
+        return SQ_FAIL(err, SQ_ERR_USAGE, "edge %d out of range (face has %d edges)", edge,
+                       (int)face->edges.size());
+    const Edge &e = face->edges[(size_t)edge];
+    double slack = 1e-9 * e.length;
+    if (!(s0 >= -slack && s1 <= e.length + slack))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "arc lengths [%.17g, %.17g] outside [0, %.17g] on edge %d",
+                       s0, s1, e.length, edge);
+    if (!(s1 > s0)) return SQ_OK;
+    try {
+        s0 = std::max(0.0, s0), s1 = std::min(e.length, s1);
+        double ua = u_of_s(e, e.reversed ? e.length - s1 : s0);
+        double ub = u_of_s(e, e.reversed ? e.length - s0 : s1);
+        double sum = face->green_u(e, ua, ub);
+        *val = e.reversed ? -sum : sum;
         return SQ_OK;
     }
     SQCAD_CATCH(err)

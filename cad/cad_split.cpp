@@ -12,7 +12,9 @@
 //     that coincide share one TopoDS_Vertex.  An end point that is neither on
 //     the boundary, nor at another curve's end, nor on another curve (a
 //     T-junction) is "dangling": SQ_ERR_LAYOUT, nothing is split.  Interior
-//     points must lie in the face (BRepClass_FaceClassifier, IN or ON);
+//     points must lie in the face (IN or ON: BRepTopAdaptor_FClass2d, whose
+//     boundary polygon sends points near the boundary to the exact
+//     BRepClass_FaceClassifier);
 //  3. curves: 2D points -> 3D with the frame; 2 points: a degree-1 B-spline
 //     (the segment), more: a cubic B-spline interpolating them
 //     (GeomAPI_Interpolate, chord-length parameters), whose ends are exactly
@@ -23,13 +25,15 @@
 //     T-junctions are split where they meet.  A sub-face holding an INTERNAL
 //     edge (a curve piece that cuts nothing) is reported as dangling;
 //  5. area: Green's theorem, 1/2 int (x dy - y dx) along each sub-face's
-//     edges in the 2D frame (origin moved to the face's centre), adaptive
-//     10-point Gauss-Legendre on the edges' C2 pieces (exact on the cubic
-//     B-spline pieces); the areas must add up to the face's (1e-8 relative);
+//     edges in the 2D frame (origin moved to the face's centre), 10-point
+//     Gauss-Legendre on the edges' knot spans: one rule per span on lines
+//     and polynomial B-splines (exact), adaptive on the others; the areas
+//     must add up to the face's (1e-8 relative);
 //  6. corners: along each wire (BRepTools_WireExplorer) the turning angle
 //     between the tangent at the end of one edge and at the start of the next;
 //  7. STEP: the sub-faces in one shell (they share their split edges), in the
-//     file's 3D frame, written in the model's unit without scaling, to a
+//     file's 3D frame, written in the model's unit without scaling and
+//     without pcurves (a plane's are its 3D curves projected), to a
 //     temporary file beside the target, then renamed over it.
 #include "cad_private.hxx"
 
@@ -39,12 +43,15 @@
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepClass_FaceClassifier.hxx>
 #include <BRepTools_WireExplorer.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <Bnd_Box.hxx>
+#include <ElSLib.hxx>
 #include <GeomAPI_Interpolate.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
 #include <Geom_BSplineCurve.hxx>
+#include <Geom_Plane.hxx>
 #include <IFSelect_ReturnStatus.hxx>
 #include <Interface_Static.hxx>
 #include <Message.hxx>
@@ -69,6 +76,7 @@
 #include <TopoDS_Vertex.hxx>
 #include <TopoDS_Wire.hxx>
 #include <gp_Pnt.hxx>
+#include <gp_Pnt2d.hxx>
 #include <gp_Vec.hxx>
 
 #include <fcntl.h>
@@ -168,20 +176,43 @@ double green_adapt(const BRepAdaptor_Curve &c, const Frame &f, double a, double 
            green_adapt(c, f, m, b, r, 0.5 * tol, depth + 1);
 }
 
-// Signed Green integral along an edge as oriented (FORWARD: first -> last).
+// True if x y' - y x' is a polynomial of degree <= 19 on each knot span of
+// the curve (a line, or a non-rational B-spline or Bezier curve of degree <=
+// 10), so that one 10-point Gauss-Legendre rule per span is exact.
+bool green_polynomial(const BRepAdaptor_Curve &c)
+{
+    switch (c.GetType()) {
+    case GeomAbs_Line:
+        return true;
+    case GeomAbs_BSplineCurve:
+    case GeomAbs_BezierCurve:
+        return !c.IsRational() && c.Degree() <= 10;
+    default:
+        return false;
+    }
+}
+
+// Signed Green integral along an edge as oriented (FORWARD: first -> last):
+// on the knot spans (where the curve is C-infinity), one rule per span where
+// that is exact (the separatrices' cubic B-splines), else adaptive.
 double edge_green(const TopoDS_Edge &e, const Frame &f, double tol)
 {
     BRepAdaptor_Curve c(e);
     double u0 = c.FirstParameter(), u1 = c.LastParameter();
-    int n = c.NbIntervals(GeomAbs_C2);
+    int n = c.NbIntervals(GeomAbs_CN);
     TColStd_Array1OfReal iv(1, n + 1);
-    c.Intervals(iv, GeomAbs_C2);
+    c.Intervals(iv, GeomAbs_CN);
     std::vector<double> br(1, u0);
     for (int i = 1; i <= n + 1; ++i)
         if (iv(i) > br.back() && iv(i) < u1) br.push_back(iv(i));
     br.push_back(u1);
+    const bool exact = green_polynomial(c);
     double sum = 0;
     for (size_t k = 0; k + 1 < br.size(); ++k) {
+        if (exact) {
+            sum += green_rule(c, f, br[k], br[k + 1]);
+            continue;
+        }
         const int pieces = 2;
         double h = (br[k + 1] - br[k]) / pieces;
         for (int j = 0; j < pieces; ++j) {
@@ -248,6 +279,44 @@ const char *step_unit_name(const char *unit, double *mm)
     *mm = 1.0; // unknown (BREP): written as millimetres, numbers unchanged
     return "MM";
 }
+
+// An Interface_Static setting changed while alive (the old value restored).
+class StaticText {
+  public:
+    StaticText(const char *name, const char *value) : name_(name)
+    {
+        const char *old = Interface_Static::CVal(name);
+        had_ = old != nullptr;
+        if (had_) saved_ = old;
+        Interface_Static::SetCVal(name, value);
+    }
+    ~StaticText()
+    {
+        if (had_) Interface_Static::SetCVal(name_, saved_.c_str());
+    }
+    StaticText(const StaticText &) = delete;
+    StaticText &operator=(const StaticText &) = delete;
+
+  private:
+    const char *name_;
+    bool had_;
+    std::string saved_;
+};
+
+class StaticInt {
+  public:
+    StaticInt(const char *name, int value) : name_(name), saved_(Interface_Static::IVal(name))
+    {
+        Interface_Static::SetIVal(name, value);
+    }
+    ~StaticInt() { Interface_Static::SetIVal(name_, saved_); }
+    StaticInt(const StaticInt &) = delete;
+    StaticInt &operator=(const StaticInt &) = delete;
+
+  private:
+    const char *name_;
+    int saved_;
+};
 
 struct CurveEnd {
     double xy[2];
@@ -377,10 +446,28 @@ sq_status split(const cad_model *model, int index, const cad_face *face, int ncu
     }
 
     // 2. Interior points inside the face.
+    // On a Geom_Plane (every planar STEP face here) the points are classified
+    // in its (u, v) space by BRepTopAdaptor_FClass2d: the boundary's polygon
+    // is built once, and a point within the polygon's measured deflection of
+    // it goes to the exact BRepClass_FaceClassifier, so the answer is the
+    // exact classifier's at a fraction of its cost per point.  Other planar
+    // surfaces take the exact classifier for every point.
+    TopLoc_Location floc;
+    Handle(Geom_Plane) gpl = Handle(Geom_Plane)::DownCast(BRep_Tool::Surface(F, floc));
+    std::unique_ptr<BRepTopAdaptor_FClass2d> fcls;
+    if (!gpl.IsNull()) fcls.reset(new BRepTopAdaptor_FClass2d(F, tol));
     for (int k = 0; k < ncurves; ++k)
         for (int i = 1; i + 1 < npts[k]; ++i) {
-            BRepClass_FaceClassifier cls(F, fr.to3d(xy[k] + 2 * i), tol);
-            TopAbs_State st = cls.State();
+            gp_Pnt P = fr.to3d(xy[k] + 2 * i);
+            TopAbs_State st;
+            if (fcls) {
+                double u, v;
+                ElSLib::Parameters(gpl->Pln(), P.Transformed(floc.Transformation().Inverted()), u,
+                                   v);
+                st = fcls->Perform(gp_Pnt2d(u, v), Standard_False);
+            } else {
+                st = BRepClass_FaceClassifier(F, P, tol).State();
+            }
             if (st != TopAbs_IN && st != TopAbs_ON)
                 return SQ_FAIL(err, SQ_ERR_LAYOUT,
                                "curve %d: point %d (%.17g, %.17g) lies outside face %d", k, i,
@@ -580,25 +667,22 @@ sq_status write_step(const cad_split *s, const char *path, sq_error *err)
         Quiet quiet;
         STEPControl_Writer writer; // initialises the STEP statics
         Handle(StepData_StepModel) model = writer.Model();
-        // Global settings, restored below: the unit entity written, and the
-        // length unit of the shapes in memory (the file's own unit: no scaling).
-        std::string saved_unit = Interface_Static::CVal("write.step.unit")
-                                     ? Interface_Static::CVal("write.step.unit")
-                                     : "MM";
-        double saved_local = model->LocalLengthUnit();
-        Interface_Static::SetCVal("write.step.unit", uname);
+        // Global settings, restored on leaving: the unit entity written; no
+        // pcurves (the edges' 2D curves on the faces' planes, which a reader
+        // gets exactly by projection; they were two thirds of the file); and
+        // the length unit of the shapes in memory (the file's own unit: no
+        // scaling).
+        StaticText unit_static("write.step.unit", uname);
+        StaticInt pcurve_static("write.surfacecurve.mode", 0);
+        struct LocalUnit {
+            Handle(StepData_StepModel) m;
+            double saved;
+            ~LocalUnit() { m->SetLocalLengthUnit(saved); }
+        } local_unit{model, model->LocalLengthUnit()};
         model->SetLocalLengthUnit(mm);
         model->SetWriteLengthUnit(mm);
-        try {
-            ts = writer.Transfer(s->shell, STEPControl_AsIs);
-            ws = ts == IFSelect_RetDone ? writer.Write(tmp) : IFSelect_RetVoid;
-        } catch (...) {
-            Interface_Static::SetCVal("write.step.unit", saved_unit.c_str());
-            model->SetLocalLengthUnit(saved_local);
-            throw;
-        }
-        Interface_Static::SetCVal("write.step.unit", saved_unit.c_str());
-        model->SetLocalLengthUnit(saved_local);
+        ts = writer.Transfer(s->shell, STEPControl_AsIs);
+        ws = ts == IFSelect_RetDone ? writer.Write(tmp) : IFSelect_RetVoid;
     }
     if (ts != IFSelect_RetDone)
         return SQ_FAIL(err, SQ_ERR_OUTPUT, "%s: the sub-faces could not be translated to STEP", path);

@@ -4,7 +4,8 @@
  *  1. modal geometry of every element (dg_modal.h): x(r,s) and J cost one
  *     Dubiner recurrence of the geometry order;
  *  2. affine elements (all modes above degree 1 zero) are inverted in
- *     closed form;
+ *     closed form; on the others Newton starts from the inverse of the
+ *     straight-sided triangle through the vertices;
  *  3. bounding box of each element from its map on a lattice of order
  *     2*order + 2, enlarged by 2% of its diagonal (the map between samples
  *     bulges by far less for any valid element);
@@ -30,7 +31,8 @@ struct sem_locator {
     int go, ngm;
     sem_dubiner_tab tab; /* geometry order */
     double *gm;          /* 2*ngm*ntris modal geometry */
-    double *aff;         /* 6*ntris: x0, y0 and J^{-1} (row-major) of affine elements */
+    double *aff;         /* 6*ntris: x0, y0 and J^{-1} (row-major) of the map if affine, else of the
+                            straight-sided triangle through the vertices (Newton's start) */
     unsigned char *is_aff;
     double *ebox; /* 4*ntris: xmin, xmax, ymin, ymax */
     double x0, y0, cw, ch;
@@ -59,7 +61,13 @@ int sem_locator_invert(const sem_locator *loc, int e, const double xy[2], double
         rs[1] = a[4] * dx + a[5] * dy;
         return 0;
     }
-    double r = 1.0 / 3.0, s = 1.0 / 3.0, prev = HUGE_VAL;
+    /* start from the inverse of the straight-sided triangle through the
+     * vertices: on a curved element near the point it is a few rounds of
+     * Newton closer than the centroid */
+    const double *a = loc->aff + 6 * (size_t)e;
+    const double dx = xy[0] - a[0], dy = xy[1] - a[1];
+    double r = a[2] * dx + a[3] * dy, s = a[4] * dx + a[5] * dy, prev = HUGE_VAL;
+    if (!(fabs(r) < LOC_FAR && fabs(s) < LOC_FAR && isfinite(r) && isfinite(s))) r = s = 1.0 / 3.0;
     for (int it = 0; it < LOC_NEWTON_MAX; ++it) {
         double x[2], J[4];
         const double det = sem_locator_map(loc, e, r, s, x, J);
@@ -162,15 +170,26 @@ sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_err
                 }
         double x0[2], J[4];
         const double det = sem_locator_map(L, e, 0.0, 0.0, x0, J);
+        double *a = L->aff + 6 * (size_t)e;
+        a[0] = x0[0];
+        a[1] = x0[1];
         if (hi <= 1e-14 * (b[1] - b[0] + b[3] - b[2]) && det != 0.0) {
-            double *a = L->aff + 6 * (size_t)e;
-            a[0] = x0[0];
-            a[1] = x0[1];
             a[2] = J[3] / det;
             a[3] = -J[1] / det;
             a[4] = -J[2] / det;
             a[5] = J[0] / det;
             L->is_aff[e] = 1;
+        } else {
+            /* the straight-sided triangle through the vertices */
+            double x1[2], x2[2];
+            sem_locator_map(L, e, 1.0, 0.0, x1, NULL);
+            sem_locator_map(L, e, 0.0, 1.0, x2, NULL);
+            const double j0 = x1[0] - x0[0], j1 = x2[0] - x0[0], j2 = x1[1] - x0[1],
+                         j3 = x2[1] - x0[1], d = j0 * j3 - j1 * j2;
+            a[2] = j3 / d;
+            a[3] = -j1 / d;
+            a[4] = -j2 / d;
+            a[5] = j0 / d;
         }
     }
     /* grid of about one cell per element */

@@ -3,7 +3,7 @@
  * A bucket grid over the elements' bounding boxes (each box bounds the
  * curved element, sampled on a fine lattice of its map and enlarged) gives
  * candidate elements; each candidate is tested by inverting its map x(r,s)
- * with Newton's method from the centroid, accepting a converged (r,s)
+ * with Newton's method, accepting a converged (r,s)
  * inside the reference triangle (within SEM_LOCATE_TOL).  With a hint
  * element the search first walks from element to neighbour across the edge
  * the inverse map points through, which costs a few Newton solves when the
@@ -32,7 +32,7 @@ const sem_tri_mesh *sem_locator_mesh(const sem_locator *loc);
 int sem_locator_find(const sem_locator *loc, const double xy[2], int hint, int *elem, double *r,
                      double *s);
 
-/* Newton inversion of element e's map at xy from the centroid: returns 0
+/* Newton inversion of element e's map at xy (see locate.c): returns 0
  * if it converged, with (r,s) in rs (inside the reference triangle or not:
  * test with sem_locator_inside), 1 if it did not converge. */
 int sem_locator_invert(const sem_locator *loc, int e, const double xy[2], double rs[2]);

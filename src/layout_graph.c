@@ -2,8 +2,6 @@
  * layout.h). */
 #include "layout_internal.h"
 
-#include <gsl/gsl_errno.h>
-#include <gsl/gsl_integration.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -97,6 +95,10 @@ static sq_status hit_push(lay_hit **h, int *n, int *cap, lay_hit v, sq_error *er
     return SQ_OK;
 }
 
+/* min and max of two finite numbers (fmin and fmax are library calls here) */
+static inline double lo(double a, double b) { return a < b ? a : b; }
+static inline double hi(double a, double b) { return a > b ? a : b; }
+
 static int end_of(const sq_separatrix *s, double x, double y, double tol)
 {
     if (hypot(x - s->xy[0], y - s->xy[1]) <= tol) return 0;
@@ -146,6 +148,16 @@ sq_status lay_intersections(const sq_separatrix_set *set, double tol, lay_hit **
                     if (A->sep == B->sep && abs(a - b) <= 1) continue;
                     const double *p = &sa->xy[2 * a], *q = &sb->xy[2 * b];
                     double r[2] = {p[2] - p[0], p[3] - p[1]}, s[2] = {q[2] - q[0], q[3] - q[1]};
+                    /* A hit below lies on both segments' lines within tol +
+                     * eps x length of each segment, so within their bounding
+                     * boxes grown by that much (the 1-norms bound the
+                     * lengths): pairs whose grown boxes are apart are skipped
+                     * before the hypot calls that dominate the cost. */
+                    double g = tol + eps * (fabs(r[0]) + fabs(r[1]) + fabs(s[0]) + fabs(s[1]));
+                    if (lo(p[0], p[2]) - g > hi(q[0], q[2]) ||
+                        lo(q[0], q[2]) - g > hi(p[0], p[2]) ||
+                        lo(p[1], p[3]) - g > hi(q[1], q[3]) || lo(q[1], q[3]) - g > hi(p[1], p[3]))
+                        continue;
                     double den = r[0] * s[1] - r[1] * s[0];
                     double lr = hypot(r[0], r[1]), ls = hypot(s[0], s[1]);
                     if (fabs(den) <= 1e-14 * lr * ls || lr == 0.0 || ls == 0.0) continue;
@@ -202,51 +214,6 @@ sq_status lay_intersections(const sq_separatrix_set *set, double tol, lay_hit **
 }
 
 /* ---- graph -------------------------------------------------------------- */
-
-typedef struct {
-    const cad_face *face;
-    int edge;
-    sq_status status;
-    sq_error *err;
-} green_ctx;
-
-static double green_integrand(double s, void *p)
-{
-    green_ctx *c = p;
-    double xy[2], t[2];
-    if (c->status != SQ_OK) return 0.0;
-    c->status = cad_face_edge_eval(c->face, c->edge, s, xy, t, NULL, c->err);
-    return c->status == SQ_OK ? xy[0] * t[1] - xy[1] * t[0] : 0.0;
-}
-
-/* Twice the area swept by CAD edge `edge` from s0 to s1 (Green). */
-static sq_status green_piece(const cad_face *face, int edge, double s0, double s1, double *val,
-                             sq_error *err)
-{
-    *val = 0.0;
-    if (s1 <= s0) return SQ_OK;
-    if (cad_face_edge_type(face, edge) == CAD_EDGE_LINE) {
-        double a[2], b[2];
-        SQ_TRY(cad_face_edge_eval(face, edge, s0, a, NULL, NULL, err));
-        SQ_TRY(cad_face_edge_eval(face, edge, s1, b, NULL, NULL, err));
-        *val = a[0] * b[1] - a[1] * b[0];
-        return SQ_OK;
-    }
-    gsl_integration_workspace *ws = gsl_integration_workspace_alloc(2000);
-    if (!ws) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    green_ctx ctx = {face, edge, SQ_OK, err};
-    gsl_function F = {green_integrand, &ctx};
-    double abserr;
-    gsl_error_handler_t *old = gsl_set_error_handler_off();
-    int rc = gsl_integration_qag(&F, s0, s1, 1e-14, 1e-13, 2000, GSL_INTEG_GAUSS31, ws, val,
-                                 &abserr);
-    gsl_set_error_handler(old);
-    gsl_integration_workspace_free(ws);
-    if (ctx.status != SQ_OK) return ctx.status;
-    if (rc != 0 && rc != GSL_EROUND && abserr > 1e-9 * (fabs(*val) + s1 - s0))
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "edge %d: area integral did not converge", edge);
-    return SQ_OK;
-}
 
 void lay_graph_clear(sq_layout *L)
 {
@@ -883,7 +850,7 @@ sq_status lay_graph_build(sq_layout *L, const cad_face *face, const sq_face_info
     for (int e = 0; e < L->nedges && st == SQ_OK; e++) {
         const sq_layout_edge *E = &L->edges[e];
         if (E->cad_edge >= 0) {
-            st = green_piece(face, E->cad_edge, E->s0, E->s1, &g.twice_area[e], err);
+            st = cad_face_edge_green(face, E->cad_edge, E->s0, E->s1, &g.twice_area[e], err);
         } else {
             double a = 0.0;
             for (int j = 0; j + 1 < E->npts; j++)

@@ -53,8 +53,13 @@ static double against_polyline(const double *p0, const double *p1, const double 
     double best = HUGE_VAL, sl = hypot(p1[0] - p0[0], p1[1] - p0[1]);
     for (int i = 0; i + 1 < npts; i++) {
         const double *q0 = &xy[2 * i], *q1 = &xy[2 * i + 2];
+        /* the test below, first with the 1-norm bound of the length and
+         * squares (no hypot: most segments are far) */
+        double dx = q0[0] - p1[0], dy = q0[1] - p1[1];
+        double far = r + sl + fabs(q1[0] - q0[0]) + fabs(q1[1] - q0[1]);
+        if (dx * dx + dy * dy > far * far) continue;
         double ql = hypot(q1[0] - q0[0], q1[1] - q0[1]);
-        if (hypot(q0[0] - p1[0], q0[1] - p1[1]) > r + sl + ql) continue;
+        if (hypot(dx, dy) > r + sl + ql) continue;
         double d[2];
         seg_dir(xy, i, d);
         if (d[0] * f[0] + d[1] * f[1] > -OPPOSITE_COS) continue;

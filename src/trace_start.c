@@ -13,7 +13,7 @@ sq_status sq_trace_start_direction(const sq_cross_field *field, const double p0[
                                    double alpha0, double tol, double *alpha, sq_error *err)
 {
     if (!(c > 0.0)) return SQ_FAIL(err, SQ_ERR_USAGE, "Algorithm 1 radius %g must be > 0", c);
-    double a = alpha0, d = HUGE_VAL;
+    double a = alpha0, d = HUGE_VAL, dprev[2] = {HUGE_VAL, HUGE_VAL};
     int elem = -1;
     /* fixed-point iteration: at the ray's point at distance c, take the
      * branch psi' nearest to the ray's direction and turn the ray onto it;
@@ -33,6 +33,13 @@ sq_status sq_trace_start_direction(const sq_cross_field *field, const double p0[
             *alpha = a;
             return SQ_OK;
         }
+        /* far from converged and no smaller than two passes ago (where the
+         * iteration converges it has contracted well before pass 20): it
+         * does not contract (a corner with a jump of the data, where it
+         * settles on a two-cycle); stop rather than run out the passes */
+        if (it >= 20 && fabs(d) > 1e3 * tol && fabs(d) >= fabs(dprev[1])) break;
+        dprev[1] = dprev[0];
+        dprev[0] = d;
     }
     return SQ_FAIL(err, SQ_ERR_INTERNAL,
                    "Algorithm 1 at (%.9g, %.9g) did not converge from %.6f (last change %.3g)",

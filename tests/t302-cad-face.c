@@ -1,6 +1,7 @@
 /* t302 — cad_face on the examples: loops and edges, lengths, curvature,
  * coordinates, orientation (area by Green's theorem with the edge
- * evaluation), closure, arc-length parametrization and projection. */
+ * evaluation), closure, arc-length parametrization and projection, Green
+ * integrals along pieces of edges. */
 #include "cad.h"
 #include "t30x_cad.h"
 
@@ -177,6 +178,16 @@ int main(void)
             NEAR("half_disc arc midpoint x", p[0], 0.0, 1e-13);
             NEAR("half_disc arc midpoint y", p[1], 1.0, 1e-13);
             NEAR("half_disc arc midpoint tangent x (travel to -x)", t[0], -1.0, 1e-13);
+            /* x dy - y dx = r^2 dtheta about the centre (the frame's origin) */
+            double g[3];
+            sq_error err;
+            CHECK(cad_face_edge_green(f, e, 0.0, pi / 2, &g[0], &err) == SQ_OK &&
+                      cad_face_edge_green(f, e, 0.3, 2.5, &g[1], &err) == SQ_OK &&
+                      cad_face_edge_green(f, e, 2.5, 0.3, &g[2], &err) == SQ_OK,
+                  "half_disc: cad_face_edge_green failed");
+            NEAR("half_disc arc Green integral, first quarter", g[0], pi / 2, 1e-13);
+            NEAR("half_disc arc Green integral, s in [0.3, 2.5]", g[1], 2.2, 1e-13);
+            NEAR("half_disc arc Green integral, empty range", g[2], 0.0, 0.0);
         }
     cad_face_free(&f);
 
@@ -191,6 +202,14 @@ int main(void)
     check_curvature("annulus", f, 1, CAD_EDGE_CIRCLE, -2.5);
     NEAR("annulus area", green(f, -1, 64), 0.84 * pi, 1e-10);
     NEAR("annulus hole area", green(f, 1, 64), -0.16 * pi, 1e-10);
+    {
+        /* the hole (r = 0.4) travelled clockwise: r^2 dtheta < 0 */
+        double g;
+        sq_error err;
+        CHECK(cad_face_edge_green(f, 1, 0.1, 0.1 + 0.4 * pi, &g, &err) == SQ_OK,
+              "annulus: cad_face_edge_green failed");
+        NEAR("annulus hole Green integral over half the hole", g, -0.16 * pi, 1e-13);
+    }
     cad_face_free(&f);
 
     f = open_face("square_hole");
