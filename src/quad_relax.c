@@ -354,7 +354,14 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
         if (!d || !p || !s0) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
     /* a mesh with a non-convex corner is left to the caller's untangling */
-    double E = st == SQ_OK ? energy(m) : HUGE_VAL;
+    double E = st == SQ_OK ? energy(m) : HUGE_VAL, lo[2] = {HUGE_VAL, HUGE_VAL},
+           hi[2] = {-HUGE_VAL, -HUGE_VAL};
+    for (int i = 0; i < m->nv; i++)
+        for (int c = 0; c < 2; c++) {
+            lo[c] = fmin(lo[c], m->xy[2 * i + c]);
+            hi[c] = fmax(hi[c], m->xy[2 * i + c]);
+        }
+    const double extent = hypot(hi[0] - lo[0], hi[1] - lo[1]);
     for (int it = 0; it < MAX_NEWTON && st == SQ_OK && w.ndof > 0 && E < HUGE_VAL; it++) {
         for (int i = 0; i < m->nv && st == SQ_OK; i++)
             if (w.dof[i] >= 0 && w.edge[i] >= 0)
@@ -374,7 +381,13 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
             memcpy(w.s, s0, sizeof(double) * (size_t)m->nv);
             break;
         }
-        int done = E - E1 < 1e-10 * E;
+        /* converged: the step moved no vertex by more than 1e-10 of the
+         * mesh's extent (Newton's last steps shrink quadratically) */
+        double moved = 0.0;
+        for (int i = 0; i < m->nv; i++)
+            moved =
+                fmax(moved, fabs(m->xy[2 * i] - p[2 * i]) + fabs(m->xy[2 * i + 1] - p[2 * i + 1]));
+        int done = moved < 1e-10 * extent || E - E1 < 1e-15 * E;
         E = E1;
         if (done) break;
     }
