@@ -7,7 +7,10 @@
 #include <stdlib.h>
 #include <string.h>
 
-#define MAX_SEGMENTS 1000000 /* per edge: quantization that runs away is a bug */
+#define MAX_SEGMENTS 1000000
+/* a relaxed mesh is kept at once when its curved quads are at least this
+ * far from folding (smallest scaled Jacobian over their nodes) */
+#define SJ_ACCEPT 0.2 /* per edge: quantization that runs away is a bug */
 
 void sq_mesher_options_default(sq_mesher_options *opt)
 {
@@ -995,19 +998,28 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
     if (st == SQ_OK && folded) st = smooth(face, info, &v, keep, err);
     /* relaxed with the singular points free to even out their angles, then
      * held where the field put them, then not relaxed at all: the first of
-     * these whose curved quads all have a positive Jacobian */
+     * these whose curved quads all have a scaled Jacobian of at least
+     * SJ_ACCEPT, else the one with the largest smallest scaled Jacobian */
     double *smoothed = st == SQ_OK ? malloc(sizeof(double) * 2 * ((size_t)v.nv + 1)) : NULL;
     if (st == SQ_OK && !smoothed) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK) memcpy(smoothed, v.xy, sizeof(double) * 2 * (size_t)v.nv);
+    double best_sj = -HUGE_VAL;
     for (int attempt = 0; attempt < 3 && st == SQ_OK; attempt++) {
-        sq_quad_mesh_free(out);
+        sq_quad_mesh *m = NULL;
         memcpy(v.xy, smoothed, sizeof(double) * 2 * (size_t)v.nv);
         if (attempt < 2) st = relax(face, info, &v, keep, attempt == 0, err);
         if (st == SQ_OK && opt->nbl > 0) st = bl_march(face, opt, &v, err);
-        if (st == SQ_OK) st = raise_order(face, &v, Q, opt->nodes, opt, out, err);
+        if (st == SQ_OK) st = raise_order(face, &v, Q, opt->nodes, opt, &m, err);
         sq_quad_quality qq;
-        if (st == SQ_OK) st = sq_quad_mesh_quality(*out, NULL, NULL, &qq, err);
-        if (st == SQ_OK && qq.inverted == 0) break;
+        if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, &qq, err);
+        if (st == SQ_OK && qq.min_scaled_jacobian > best_sj) {
+            best_sj = qq.min_scaled_jacobian;
+            sq_quad_mesh_free(out);
+            *out = m;
+            m = NULL;
+        }
+        sq_quad_mesh_free(&m);
+        if (best_sj >= SJ_ACCEPT) break;
     }
     if (st != SQ_OK) sq_quad_mesh_free(out);
     free(smoothed);

@@ -13,6 +13,7 @@
 #define WORST_ETA 0.55
 #define WORST_SWEEPS 50
 #define MIN_TAPER 0.3
+#define TAU_ETA 0.9
 
 /* How each vertex moves. */
 typedef struct {
@@ -268,41 +269,59 @@ static sq_status place(const cad_face *face, const sq_relax_mesh *m, relax_work 
     return SQ_OK;
 }
 
-/* The worst eta of the quads around vertex i — 0 for a quad that is not
- * convex or whose corner Jacobians' ratio is below MIN_TAPER (a move that
- * keeps the angles may still shrink a side) — and the shortest of their
- * sides. */
-static double around_eta(const sq_relax_mesh *m, const relax_work *w, int i, double *shortest)
+/* The quads around vertex i: their worst eta (0 for a quad that is not
+ * convex), how many taper (corner Jacobians' ratio below MIN_TAPER: a move
+ * that keeps the angles may still shrink a side), the shortest of their
+ * sides, and their score: the sum of min(eta, TAU_ETA), plus a hundredth
+ * of the sum of eta to prefer better quads among equal scores. */
+typedef struct {
+    double worst, shortest, score;
+    int tapered;
+} around_quality;
+
+static around_quality around(const sq_relax_mesh *m, const relax_work *w, int i)
 {
-    double worst = 1.0;
-    *shortest = HUGE_VAL;
+    around_quality r = {1.0, HUGE_VAL, 0.0, 0};
     for (int t = w->start[i]; t < w->start[i + 1]; t++) {
         const int *q = &m->quad[4 * w->around[t]];
         const double *c[4];
         for (int k = 0; k < 4; k++)
             c[k] = &m->xy[2 * q[k]];
-        for (int k = 0; k < 4; k++)
-            *shortest =
-                fmin(*shortest, hypot(c[k][0] - c[(k + 1) % 4][0], c[k][1] - c[(k + 1) % 4][1]));
         double dmin = HUGE_VAL, dmax = 0.0;
         for (int k = 0; k < 4; k++) {
             const double *p = c[k], *a = c[(k + 1) % 4], *b = c[(k + 3) % 4];
             double det = (a[0] - p[0]) * (b[1] - p[1]) - (a[1] - p[1]) * (b[0] - p[0]);
             dmin = fmin(dmin, det);
             dmax = fmax(dmax, det);
+            r.shortest = fmin(r.shortest, hypot(a[0] - p[0], a[1] - p[1]));
         }
-        double eta = dmin / dmax < MIN_TAPER ? 0.0 : sq_quad_corner_eta(c);
-        worst = fmin(worst, fmax(eta, 0.0));
+        double eta = fmax(sq_quad_corner_eta(c), 0.0);
+        r.tapered += !(dmin / dmax >= MIN_TAPER);
+        r.worst = fmin(r.worst, eta);
+        r.score += fmin(eta, TAU_ETA) + 0.01 * eta;
     }
-    return worst;
+    return r;
 }
 
-/* Where the energy's optimum still leaves a poor quad (a corner that the
- * layout forces to an awkward angle pulls its neighbours along), raise the
- * worst eta around each of its vertices by a compass search: each move
- * must improve the minimum over the quads it touches. */
-static sq_status raise_worst(const cad_face *face, const sq_relax_mesh *m, relax_work *w,
-                             sq_error *err)
+/* Is y better than x: no more tapered quads, and phase 0 raises the
+ * worst eta (where it is below WORST_ETA); phase 1 raises the score
+ * without lowering the worst. */
+static int better(int phase, around_quality y, around_quality x)
+{
+    if (y.tapered > x.tapered) return 0;
+    return phase == 0 ? y.worst > x.worst + 1e-12
+                      : y.score > x.score + 1e-12 && y.worst >= x.worst - 1e-12;
+}
+
+/* Compass search on the vertices, after the energy's optimum: phase 0,
+ * where a quad is still poor (a corner that the layout forces to an
+ * awkward angle pulls its neighbours along), raises the worst eta around
+ * each vertex; phase 1 lifts the quads just below eta = TAU_ETA (the
+ * neighbours of quads whose angles a corner or a singular point fixes)
+ * without lowering any worst eta.  Each move must improve the quads it
+ * touches. */
+static sq_status compass(const cad_face *face, const sq_relax_mesh *m, relax_work *w, int phase,
+                         sq_error *err)
 {
     static const double DIR[8][2] = {{1, 0},  {0.7071, 0.7071},   {0, 1},  {-0.7071, 0.7071},
                                      {-1, 0}, {-0.7071, -0.7071}, {0, -1}, {0.7071, -0.7071}};
@@ -317,11 +336,12 @@ static sq_status raise_worst(const cad_face *face, const sq_relax_mesh *m, relax
         for (int i = 0; i < m->nv && st == SQ_OK; i++) {
             if (!active[i]) continue;
             active[i] = 0;
-            double len, eta = around_eta(m, w, i, &len);
-            if (eta >= WORST_ETA) continue;
-            double *x = &m->xy[2 * i], x0[2] = {x[0], x[1]}, s0 = w->s[i];
+            around_quality cur = around(m, w, i);
+            if (phase == 0 ? cur.worst >= WORST_ETA : cur.worst >= TAU_ETA) continue;
+            double *x = &m->xy[2 * i], x0[2] = {x[0], x[1]}, s0 = w->s[i], len = cur.shortest;
             for (double h = 0.25 * len; h > len / 256.0 && st == SQ_OK; h *= 0.5) {
-                double best = eta, bx[2] = {x0[0], x0[1]}, bs = s0, l;
+                around_quality best = cur;
+                double bx[2] = {x0[0], x0[1]}, bs = s0;
                 int ndir = w->edge[i] >= 0 ? 2 : 8;
                 for (int k = 0; k < ndir && st == SQ_OK; k++) {
                     if (w->edge[i] >= 0) {
@@ -331,14 +351,14 @@ static sq_status raise_worst(const cad_face *face, const sq_relax_mesh *m, relax
                         x[0] = x0[0] + h * DIR[k][0];
                         x[1] = x0[1] + h * DIR[k][1];
                     }
-                    double e = around_eta(m, w, i, &l);
-                    if (e > best + 1e-12) {
+                    around_quality e = around(m, w, i);
+                    if (better(phase, e, best)) {
                         best = e;
                         bx[0] = x[0], bx[1] = x[1], bs = w->s[i];
                     }
                 }
                 x[0] = bx[0], x[1] = bx[1], w->s[i] = bs;
-                if (best > eta) {
+                if (better(phase, best, cur)) {
                     moved = 1;
                     for (int t = w->start[i]; t < w->start[i + 1]; t++)
                         for (int k = 0; k < 4; k++) {
@@ -405,7 +425,8 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
         E = E1;
         if (done) break;
     }
-    if (st == SQ_OK) st = raise_worst(face, m, &w, err);
+    for (int phase = 0; phase < 2 && st == SQ_OK; phase++)
+        st = compass(face, m, &w, phase, err);
     free(d);
     free(p);
     free(s0);
