@@ -13,6 +13,7 @@
 #define WORST_ETA 0.55
 #define WORST_SWEEPS 50
 #define MIN_TAPER 0.3
+#define MAX_STRETCH 5.0
 #define TAU_ETA 0.9
 
 /* How each vertex moves. */
@@ -270,13 +271,14 @@ static sq_status place(const cad_face *face, const sq_relax_mesh *m, relax_work 
 }
 
 /* The quads around vertex i: their worst eta (0 for a quad that is not
- * convex), how many taper (corner Jacobians' ratio below MIN_TAPER: a move
+ * convex), how many are distorted otherwise (corner Jacobians' ratio below
+ * MIN_TAPER or sides longer than MAX_STRETCH times the shortest: a move
  * that keeps the angles may still shrink a side), the shortest of their
  * sides, and their score: the sum of min(eta, TAU_ETA), plus a hundredth
  * of the sum of eta to prefer better quads among equal scores. */
 typedef struct {
     double worst, shortest, score;
-    int tapered;
+    int distorted;
 } around_quality;
 
 static around_quality around(const sq_relax_mesh *m, const relax_work *w, int i)
@@ -287,28 +289,31 @@ static around_quality around(const sq_relax_mesh *m, const relax_work *w, int i)
         const double *c[4];
         for (int k = 0; k < 4; k++)
             c[k] = &m->xy[2 * q[k]];
-        double dmin = HUGE_VAL, dmax = 0.0;
+        double dmin = HUGE_VAL, dmax = 0.0, lmin = HUGE_VAL, lmax = 0.0;
         for (int k = 0; k < 4; k++) {
             const double *p = c[k], *a = c[(k + 1) % 4], *b = c[(k + 3) % 4];
             double det = (a[0] - p[0]) * (b[1] - p[1]) - (a[1] - p[1]) * (b[0] - p[0]);
+            double l = hypot(a[0] - p[0], a[1] - p[1]);
             dmin = fmin(dmin, det);
             dmax = fmax(dmax, det);
-            r.shortest = fmin(r.shortest, hypot(a[0] - p[0], a[1] - p[1]));
+            lmin = fmin(lmin, l);
+            lmax = fmax(lmax, l);
         }
+        r.shortest = fmin(r.shortest, lmin);
         double eta = fmax(sq_quad_corner_eta(c), 0.0);
-        r.tapered += !(dmin / dmax >= MIN_TAPER);
+        r.distorted += !(dmin / dmax >= MIN_TAPER) || !(lmax <= MAX_STRETCH * lmin);
         r.worst = fmin(r.worst, eta);
         r.score += fmin(eta, TAU_ETA) + 0.01 * eta;
     }
     return r;
 }
 
-/* Is y better than x: no more tapered quads, and phase 0 raises the
+/* Is y better than x: no more distorted quads, and phase 0 raises the
  * worst eta (where it is below WORST_ETA); phase 1 raises the score
  * without lowering the worst. */
 static int better(int phase, around_quality y, around_quality x)
 {
-    if (y.tapered > x.tapered) return 0;
+    if (y.distorted > x.distorted) return 0;
     return phase == 0 ? y.worst > x.worst + 1e-12
                       : y.score > x.score + 1e-12 && y.worst >= x.worst - 1e-12;
 }
