@@ -11,9 +11,7 @@
 Every number is the median of --runs runs (default 3) of the timings_s that
 semquad writes to its JSON report (so process start-up, reading the STEP file
 and the coarse triangulation are not included; they are shown separately).
-The number of integration steps is not in the report; it is estimated from the
-layout SVG (one polyline point per accepted step, summed over the separatrix
-polylines), so us/step is an estimate.
+The number of integration steps is the report's layout.integration_steps.
 
 Usage (from the repository root; builds build-release if needed):
   python3 bench/pipeline_bench.py [field|layout|all] [--runs N]
@@ -25,7 +23,6 @@ import argparse
 import glob
 import json
 import os
-import re
 import statistics
 import subprocess
 import sys
@@ -131,25 +128,14 @@ def bench_field(files, orders, runs, tmp, out):
     out["field"] = res
 
 
-def count_steps(svg):
-    """Sum over the separatrix polylines (interior layout edges) of points - 1."""
-    n = 0
-    with open(svg) as fh:
-        for line in fh:
-            if 'stroke="#2b2b8f"' in line and "points=" in line:
-                pts = re.search(r'points="([^"]*)"', line).group(1).split()
-                n += max(0, len(pts) - 1)
-    return n
-
-
 def bench_layout(files, runs, tmp, out):
     print("### Tracing + layout + split (`semquad layout FILE -o patches.step`, P = 8)\n")
-    print("Median of %d runs, milliseconds. `steps (est.)` counts the points of the "
-          "separatrix polylines of the layout SVG (an estimate of the AB4 steps; "
-          "merged separatrices are resampled), from which `µs/step` is "
-          "trace time / steps.\n" % runs)
+    print("Median of %d runs, milliseconds. `steps`: the AB4 integration steps of the "
+          "trace stage (`layout.integration_steps` of the report), from which `µs/step` "
+          "is trace time / steps (the trace time also holds the start-direction search "
+          "of Algorithm 1 and the meeting checks).\n" % runs)
     print("| example | separatrices traced / kept | patches | trace | layout | split "
-          "| total | < 200 ms | steps (est.) | µs/step (est.) |")
+          "| total | < 200 ms | steps | µs/step |")
     print("|---|---|---|---|---|---|---|---|---|---|")
     res = {}
     for f in files:
@@ -171,10 +157,8 @@ def bench_layout(files, runs, tmp, out):
             print("| %s | — | — | — | — | — | — | — | — | %s |" % (name, err.replace("|", "/")))
             res[name] = {"error": err}
             continue
-        svg = os.path.join(tmp, "l.svg")
-        rc, _ = run_semquad(["layout", f, "--svg", svg], os.path.join(tmp, "l2.json"))
-        steps = count_steps(svg) if rc == 0 else 0
         L = rep["layout"]
+        steps = L.get("integration_steps", 0)
         # with no separatrix traced from a singular point or corner (square,
         # annulus: its cut lines are traced inside the layout stage) the trace
         # time holds no steps: no per-step figure
@@ -186,8 +170,8 @@ def bench_layout(files, runs, tmp, out):
             str(steps) if L["separatrices_traced"] else "—",
             "%.2f" % us if us == us else "—"))
         res[name] = {"trace": med(tr), "layout": med(la), "split": med(sp),
-                     "total": med(tot), "steps_estimate": steps,
-                     "us_per_step_estimate": us, "layout_keys": L}
+                     "total": med(tot), "steps": steps,
+                     "us_per_step": us, "layout_keys": L}
     print()
     out["layout"] = res
 

@@ -53,6 +53,7 @@ void sq_json_layout_keys(sq_json *j, const sq_layout_result *r)
     sq_json_bool(j, r->valid);
     sq_json_key_int(j, "separatrices_traced", r->trace_stats.traced);
     sq_json_key_int(j, "merges", r->trace_stats.merges);
+    sq_json_key_int(j, "integration_steps", r->trace_stats.steps);
     sq_json_key_int(j, "separatrices", s->separatrices);
     sq_json_key_int(j, "patches", s->patches);
     sq_json_key_int(j, "quad_patches", s->quad_patches);
