@@ -78,9 +78,18 @@ static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_wor
         }
     sq_status st = SQ_OK;
     w->ndof = 0;
+    /* with nothing fixed (an annulus: no corner, no singular point) the
+     * energy does not change under a rotation along the circles: hold the
+     * first boundary vertex */
+    int anchor = -1, any_fixed = 0;
+    for (int i = 0; i < m->nv; i++) {
+        any_fixed |= m->fixed[i] || (nb[i] != 0 && (nb[i] != 2 || w->edge[i] < 0));
+        if (anchor < 0 && nb[i] != 0) anchor = i;
+    }
+    if (any_fixed) anchor = -1;
     for (int i = 0; i < m->nv && st == SQ_OK; i++) {
         w->dof[i] = -1;
-        if (m->fixed[i] || (nb[i] != 0 && (nb[i] != 2 || w->edge[i] < 0))) {
+        if (m->fixed[i] || i == anchor || (nb[i] != 0 && (nb[i] != 2 || w->edge[i] < 0))) {
             w->edge[i] = -1;
             continue;
         }
