@@ -267,8 +267,12 @@ int sq_htheta_eval(const sq_htheta *f, const double x[2], int *elem, double *H, 
     double r, s;
     if (sem_locator_find(f->loc, x, elem ? *elem : -1, &e, &r, &s)) return 1;
     if (elem) *elem = e;
-    const double h = sq_h_field_eval_ref(&f->h, e, r, s, NULL, gH);
-    if (H) *H = h;
+    /* H (with its singular log terms) only when asked for: the tracer
+     * needs θ alone */
+    if (H || gH) {
+        const double h = sq_h_field_eval_ref(&f->h, e, r, s, NULL, gH);
+        if (H) *H = h;
+    }
     const double t = sq_theta_field_eval_ref(&f->theta, e, r, s, gtheta);
     if (theta) *theta = t;
     return 0;

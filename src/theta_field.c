@@ -44,9 +44,10 @@ static double theta_singular(const sq_theta_field *t, int e, const double x[2], 
 
 double sq_theta_field_eval_ref(const sq_theta_field *t, int e, double r, double s, double grad[2])
 {
+    /* the derivatives only when asked for: the tracer needs θ alone */
     double v, g[2], x[2], gs[2];
-    sem_field_evaluator_eval_ref(t->ev, e, r, s, &v, g, x);
-    v += theta_singular(t, e, x, gs) + t->theta0;
+    sem_field_evaluator_eval_ref(t->ev, e, r, s, &v, grad ? g : NULL, x);
+    v += theta_singular(t, e, x, grad ? gs : NULL) + t->theta0;
     if (grad) grad[0] = g[0] + gs[0], grad[1] = g[1] + gs[1];
     return v;
 }

@@ -58,6 +58,12 @@ static double against_polyline(const double *p0, const double *p1, const double 
         double dx = q0[0] - p1[0], dy = q0[1] - p1[1];
         double far = r + sl + fabs(q1[0] - q0[0]) + fabs(q1[1] - q0[1]);
         if (dx * dx + dy * dy > far * far) continue;
+        /* and the direction test first without the length: with
+         * m = max |q1 - q0|_i <= |q1 - q0|, (q1 - q0)·f > -0.7 m means
+         * d·f > -0.7 > -OPPOSITE_COS (the rounding is far below the
+         * margin); most segments near a front run along it */
+        double vx = q1[0] - q0[0], vy = q1[1] - q0[1];
+        if (vx * f[0] + vy * f[1] > -0.7 * fmax(fabs(vx), fabs(vy))) continue;
         double ql = hypot(q1[0] - q0[0], q1[1] - q0[1]);
         if (hypot(dx, dy) > r + sl + ql) continue;
         double d[2];

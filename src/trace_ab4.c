@@ -233,17 +233,23 @@ static sq_status end_on_boundary(sq_tracer *tr, sq_walker *w, int e, double s, d
     return SQ_OK;
 }
 
+/* Side function, foot and distance of p for every edge e (edge_side). */
+typedef struct {
+    double g, s, d;
+} edge_pos;
+
 /* The segment a -> b left the face: its crossing with the CAD boundary
- * (Illinois regula falsi on the side function along the segment). */
+ * (Illinois regula falsi on the side function along the segment); at[e]
+ * holds edge_side of b for every edge (the caller's inside test computed
+ * them already: a projection on a B-spline edge costs more than a step). */
 static sq_status stop_at_boundary(sq_tracer *tr, sq_walker *w, const double a[2],
-                                  const double b[2], double rc, sq_error *err)
+                                  const double b[2], const edge_pos *at, double rc, sq_error *err)
 {
     double len = hypot(b[0] - a[0], b[1] - a[1]), tol = 1e-9 * tr->scale;
     int best_e = -1, near_e = -1;
     double best_t = HUGE_VAL, best_s = 0.0, near_d = HUGE_VAL, near_s = 0.0;
     for (int e = 0; e < tr->nedges; e++) {
-        double g1, s1, d1, g0, s0, d0;
-        SQ_TRY(edge_side(tr, e, b, &g1, &s1, &d1, err));
+        double g1 = at[e].g, s1 = at[e].s, d1 = at[e].d, g0, s0, d0;
         if (d1 < near_d) near_d = d1, near_e = e, near_s = s1;
         if (d1 > len + tol) continue; /* the segment cannot reach this edge */
         SQ_TRY(edge_side(tr, e, a, &g0, &s0, &d0, err));
@@ -343,16 +349,20 @@ sq_status sq_walker_step(sq_tracer *tr, sq_walker *w, sq_error *err)
          * the CAD face says xn is well inside (then keep the direction) */
         int inside = 0;
         double best = HUGE_VAL, g = 0.0;
-        for (int e = 0; e < tr->nedges; e++) {
-            double ge, s, d;
-            SQ_TRY(edge_side(tr, e, xn, &ge, &s, &d, err));
-            if (d < best) best = d, g = ge;
+        edge_pos *at = malloc((size_t)(tr->nedges ? tr->nedges : 1) * sizeof *at);
+        if (!at) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory (%d edges)", tr->nedges);
+        sq_status st = SQ_OK;
+        for (int e = 0; e < tr->nedges && st == SQ_OK; e++) {
+            st = edge_side(tr, e, xn, &at[e].g, &at[e].s, &at[e].d, err);
+            if (st == SQ_OK && at[e].d < best) best = at[e].d, g = at[e].g;
         }
         inside = g > 0.0 && best > 1e-7 * tr->scale;
-        if (!inside) {
+        if (st == SQ_OK && !inside) {
             double a[2] = {x[0], x[1]};
-            return stop_at_boundary(tr, w, a, xn, rc, err);
+            st = stop_at_boundary(tr, w, a, xn, at, rc, err);
         }
+        free(at);
+        if (st != SQ_OK || !inside) return st;
         elem = w->elem;
         theta = w->alpha;
     }
