@@ -405,10 +405,18 @@ static int quad_valid(const vmesh *v, int q)
     return 1;
 }
 
-/* Laplacian smoothing of the free vertices (inside the face, valence 4),
- * a move kept only if every quad around the vertex stays convex at its
- * corners: evens out the angles that the patches' transfinite
- * interpolation leaves along separatrices and around singular points. */
+/* Is xy a corner of the face (a non-smooth vertex, even one inside a
+ * single closed edge, such as a trailing edge)? */
+static int at_face_corner(const sq_face_info *info, const double xy[2])
+{
+    double scale = hypot(info->bbox[2] - info->bbox[0], info->bbox[3] - info->bbox[1]);
+    for (int c = 0; c < info->nvertices; c++)
+        if (!info->vertices[c].smooth &&
+            hypot(info->vertices[c].x - xy[0], info->vertices[c].y - xy[1]) < 1e-9 * scale)
+            return 1;
+    return 0;
+}
+
 /* Slide boundary vertex i towards the middle of its two boundary
  * neighbours, staying on the CAD curve: keeps the spacing even where a
  * patch side is made of several layout edges (e.g. across the seam vertex
@@ -440,6 +448,10 @@ static double slide(const cad_face *face, vmesh *v, int i, const int nb[2], cons
     return hypot(best[0] - old[0], best[1] - old[1]);
 }
 
+/* Laplacian smoothing of the free vertices (inside the face, valence 4),
+ * a move kept only if every quad around the vertex stays convex at its
+ * corners: untangles what the patches' transfinite interpolation folded,
+ * so that the relaxation (relax below) starts from a valid mesh. */
 static sq_status smooth(const cad_face *face, const sq_face_info *info, vmesh *v, const int *keep,
                         sq_error *err)
 {
@@ -471,7 +483,6 @@ static sq_status smooth(const cad_face *face, const sq_face_info *info, vmesh *v
         /* boundary vertices that may slide: two quads, two boundary
          * neighbours on the same CAD edge, not a separatrix's foot, not in a
          * boundary layer, not at a corner of the face */
-        double scale = hypot(info->bbox[2] - info->bbox[0], info->bbox[3] - info->bbox[1]);
         for (int i = 0; i < v->nv; i++) {
             /* both sides on one CAD edge: an element side must never span
              * two curves (its high-order nodes follow one) */
@@ -480,11 +491,7 @@ static sq_status smooth(const cad_face *face, const sq_face_info *info, vmesh *v
                 nbn[i] = 0;
                 continue;
             }
-            for (int c = 0; c < info->nvertices; c++)
-                if (!info->vertices[c].smooth &&
-                    hypot(info->vertices[c].x - v->xy[2 * i], info->vertices[c].y - v->xy[2 * i + 1]) <
-                        1e-9 * scale)
-                    nbn[i] = 0;
+            if (at_face_corner(info, &v->xy[2 * i])) nbn[i] = 0;
         }
         for (int i = 0; i < v->nv; i++) {
             if (deg[i] != 4) fixed[i] = 1; /* singular points stay where the field put them */
@@ -560,15 +567,9 @@ static sq_status relax(const cad_face *face, const sq_face_info *info, vmesh *v,
             if (v->side_tag[4 * q + k] >= 0)
                 bnd[v->quad[4 * q + k]] = bnd[v->quad[4 * q + (k + 1) % 4]] = 1;
         }
-    double scale = hypot(info->bbox[2] - info->bbox[0], info->bbox[3] - info->bbox[1]);
-    for (int i = 0; i < v->nv; i++) {
-        fixed[i] = (keep && keep[i]) || (!bnd[i] && deg[i] != 4 && !move_singular);
-        /* a corner of the face, even inside one closed edge (a trailing edge) */
-        for (int c = 0; c < info->nvertices && bnd[i] && !fixed[i]; c++)
-            fixed[i] = !info->vertices[c].smooth &&
-                       hypot(info->vertices[c].x - v->xy[2 * i], info->vertices[c].y - v->xy[2 * i + 1]) <
-                           1e-9 * scale;
-    }
+    for (int i = 0; i < v->nv; i++)
+        fixed[i] = (keep && keep[i]) || (!bnd[i] && deg[i] != 4 && !move_singular) ||
+                   (bnd[i] && at_face_corner(info, &v->xy[2 * i]));
     sq_relax_mesh rm = {v->nv, v->nq, v->xy, v->quad, v->side_tag, fixed};
     sq_status st = sq_quad_relax(face, &rm, err);
     free(deg);

@@ -78,18 +78,22 @@ static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_wor
         }
     sq_status st = SQ_OK;
     w->ndof = 0;
-    /* with nothing fixed (an annulus: no corner, no singular point) the
-     * energy does not change under a rotation along the circles: hold the
-     * first boundary vertex */
-    int anchor = -1, any_fixed = 0;
-    for (int i = 0; i < m->nv; i++) {
-        any_fixed |= m->fixed[i] || (nb[i] != 0 && (nb[i] != 2 || w->edge[i] < 0));
-        if (anchor < 0 && nb[i] != 0) anchor = i;
+    /* held: fixed by the caller, or on the boundary without two sides on
+     * one CAD edge; with nothing held (an annulus: no corner, no singular
+     * point) the energy does not change under a rotation along the
+     * circles, so the first boundary vertex is */
+    char *held = malloc((size_t)m->nv + 1);
+    if (!held) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    int any_held = 0, first_bnd = -1;
+    for (int i = 0; i < m->nv && st == SQ_OK; i++) {
+        held[i] = m->fixed[i] || (nb[i] != 0 && (nb[i] != 2 || w->edge[i] < 0));
+        any_held |= held[i];
+        if (first_bnd < 0 && nb[i] != 0) first_bnd = i;
     }
-    if (any_fixed) anchor = -1;
+    if (st == SQ_OK && !any_held && first_bnd >= 0) held[first_bnd] = 1;
     for (int i = 0; i < m->nv && st == SQ_OK; i++) {
         w->dof[i] = -1;
-        if (m->fixed[i] || i == anchor || (nb[i] != 0 && (nb[i] != 2 || w->edge[i] < 0))) {
+        if (held[i]) {
             w->edge[i] = -1;
             continue;
         }
@@ -102,6 +106,7 @@ static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_wor
         if (st == SQ_OK) st = cad_face_edge_eval(face, w->edge[i], L, b, NULL, NULL, err);
         w->len[i] = hypot(a[0] - b[0], a[1] - b[1]) < 1e-9 * L ? L : -L;
     }
+    free(held);
     free(nb);
     return st;
 }

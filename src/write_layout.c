@@ -17,7 +17,7 @@ static const char *role_origin(const sq_layout *L, int k)
     }
 }
 
-void sq_json_layout_keys(sq_json *j, const sq_layout_result *r)
+static void json_layout_keys(sq_json *j, const sq_layout_result *r)
 {
     const sq_layout *L = &r->layout;
     sq_json_key(j, "singularities");
@@ -68,7 +68,7 @@ void sq_json_layout_keys(sq_json *j, const sq_layout_result *r)
     sq_json_end_object(j);
 }
 
-void sq_json_field_summary(sq_json *j, const sq_layout_result *r)
+static void json_field_summary(sq_json *j, const sq_layout_result *r)
 {
     sq_json_key_int(j, "chi", r->info->chi);
     sq_json_key(j, "field");
@@ -83,6 +83,15 @@ void sq_json_field_summary(sq_json *j, const sq_layout_result *r)
     sq_json_end_object(j);
 }
 
+void sq_json_layout_head(sq_json *j, const char *input, int face, const sq_layout_result *r)
+{
+    sq_json_key(j, "input");
+    sq_json_string(j, input);
+    sq_json_key_int(j, "face", face);
+    json_field_summary(j, r);
+    json_layout_keys(j, r);
+}
+
 sq_status sq_write_layout_report(const char *path, const char *input, int face,
                                  const sq_layout_result *r, double t_read, double t_split,
                                  sq_error *err)
@@ -92,11 +101,7 @@ sq_status sq_write_layout_report(const char *path, const char *input, int face,
     sq_json j;
     sq_json_init(&j, f.fp);
     sq_json_begin_object(&j);
-    sq_json_key(&j, "input");
-    sq_json_string(&j, input);
-    sq_json_key_int(&j, "face", face);
-    sq_json_field_summary(&j, r);
-    sq_json_layout_keys(&j, r);
+    sq_json_layout_head(&j, input, face, r);
     sq_json_key(&j, "timings_s");
     sq_json_begin_object(&j);
     sq_json_key_number(&j, "read", t_read);

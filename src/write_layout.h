@@ -8,12 +8,11 @@
 #include "json_writer.h"
 #include "layout_pipeline.h"
 
-/* The "layout" object and the layout's singular points (with repairs'
- * midpoints) as "singularities", plus "corners". */
-void sq_json_layout_keys(sq_json *j, const sq_layout_result *r);
-
-/* "chi" and the "field" object (kind, method, order, triangles, dofs). */
-void sq_json_field_summary(sq_json *j, const sq_layout_result *r);
+/* The keys a layout and a mesh report share, inside the open top-level
+ * object: "input", "face", "chi" and the "field" object (kind, method,
+ * order, triangles, dofs), the "layout" object and the layout's singular
+ * points (with repairs' midpoints) as "singularities", plus "corners". */
+void sq_json_layout_head(sq_json *j, const char *input, int face, const sq_layout_result *r);
 
 sq_status sq_write_layout_report(const char *path, const char *input, int face,
                                  const sq_layout_result *r, double t_read, double t_split,

@@ -12,11 +12,7 @@ sq_status sq_write_mesh_report(const char *path, const char *input, int face,
     sq_json j;
     sq_json_init(&j, f.fp);
     sq_json_begin_object(&j);
-    sq_json_key(&j, "input");
-    sq_json_string(&j, input);
-    sq_json_key_int(&j, "face", face);
-    sq_json_field_summary(&j, r);
-    sq_json_layout_keys(&j, r);
+    sq_json_layout_head(&j, input, face, r);
     sq_json_key(&j, "mesh");
     sq_json_begin_object(&j);
     sq_json_key_int(&j, "quads", m->nquads);
