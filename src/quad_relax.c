@@ -3,7 +3,6 @@
 #include "quad_mesh.h"
 #include "sparse.h"
 
-#include <lapacke.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -157,33 +156,60 @@ static double energy(const sq_relax_mesh *m)
 }
 
 /* Gradient g[4] and Hessian H[16] of corner_energy in e, the Hessian made
- * positive semi-definite by clamping its eigenvalues (projected Newton). */
+ * positive semi-definite by clamping its eigenvalues to zero (projected
+ * Newton), in closed form.
+ *
+ * The edge matrix F = [e1 e2] splits into its conformal part u (a scaled
+ * rotation) and its anti-conformal part w (symmetric, traceless): with
+ * e = (e1x, e1y, e2x, e2y), u = P+ e and w = P- e, P+- = (I +- C) / 2 the
+ * projections onto the eigenspaces (eigenvalues +-1) of the constant
+ * Hessian C of D = e1 x e2 = e^T C e / 2.  Then D = (a - b) / 2 and
+ * |e|^2 = a + b with a = |u|^2, b = |w|^2 (the |f_z|^2 and |f_zbar|^2 of
+ * complex analysis), so f = 2 (a + b) / (a - b) = phi(a, b) depends on e
+ * only through the two squared norms, like the isotropic energies whose
+ * analytic eigensystems Smith, de Goes and Kim (ACM TOG 38(1) 2019) derive
+ * from the singular values.  With s = a - b = 2 D:
+ *   g = 2 phi_a u + 2 phi_b w,  phi_a = -4 b / s^2,  phi_b = 4 a / s^2,
+ *   H = 2 phi_a P+ + 2 phi_b P- + 4 [phi_aa u u^T + phi_ab (u w^T + w u^T)
+ *       + phi_bb w w^T],
+ *   phi_aa = 8 b / s^3,  phi_bb = 8 a / s^3,  phi_ab = -4 (a + b) / s^3.
+ * Its eigenvectors: in P+'s plane, the direction normal to u, eigenvalue
+ * 2 phi_a <= 0 (clamped away); in P-'s plane, the direction normal to w,
+ * eigenvalue 2 phi_b = 8 a / s^2 > 0; and in the plane of the unit vectors
+ * uh = u / |u|, wh = w / |w| the 2 x 2 block
+ *   M = [8 b (3a + b), -16 sqrt(ab) (a + b); ., 8 a (a + 3b)] / s^3,
+ * whose determinant -64 a b / s^4 <= 0 leaves one eigenvalue lp >= 0 (the
+ * other is clamped).  So the projected Hessian is
+ *   H+ = 8 a / s^2 (P- - wh wh^T) + lp z z^T,  z = v0 uh + v1 wh,
+ * (v0, v1) M's unit eigenvector for lp.  With w = 0 (a conformal corner)
+ * any unit wh in P-'s plane gives the same H+ = 8 / a P-. */
 static void corner_derivatives(const double e[4], double g[4], double H[16])
 {
-    double N = e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3];
-    double D = e[0] * e[3] - e[1] * e[2];
-    double gN[4] = {2 * e[0], 2 * e[1], 2 * e[2], 2 * e[3]}, gD[4] = {e[3], -e[2], -e[1], e[0]};
-    /* the constant Hessian of D */
-    static const double HD[16] = {0, 0, 0, 1, 0, 0, -1, 0, 0, -1, 0, 0, 1, 0, 0, 0};
+    /* P- = (I - C) / 2 */
+    static const double PM[16] = {0.5, 0, 0, -0.5, 0, 0.5, 0.5, 0, 0, 0.5, 0.5, 0, -0.5, 0, 0, 0.5};
+    double c0 = 0.5 * (e[0] + e[3]), c1 = 0.5 * (e[1] - e[2]);
+    double w0 = 0.5 * (e[0] - e[3]), w1 = 0.5 * (e[1] + e[2]);
+    double u[4] = {c0, c1, -c1, c0}, w[4] = {w0, w1, w1, -w0};
+    double a = 2.0 * (c0 * c0 + c1 * c1), b = 2.0 * (w0 * w0 + w1 * w1);
+    double s = 2.0 * (e[0] * e[3] - e[1] * e[2]), s2 = s * s, s3 = s2 * s;
+    double ra = sqrt(a), rb = sqrt(b), uh[4], wh[4] = {M_SQRT1_2, 0.0, 0.0, -M_SQRT1_2};
     for (int i = 0; i < 4; i++) {
-        g[i] = (gN[i] * D - N * gD[i]) / (D * D);
-        for (int j = 0; j < 4; j++)
-            H[4 * i + j] = (i == j ? 2.0 / D : 0.0) - (gN[i] * gD[j] + gD[i] * gN[j]) / (D * D) -
-                           N * HD[4 * i + j] / (D * D) + 2.0 * N * gD[i] * gD[j] / (D * D * D);
+        g[i] = 8.0 * (a * w[i] - b * u[i]) / s2;
+        uh[i] = u[i] / ra;
+        if (rb > 0.0) wh[i] = w[i] / rb;
     }
-    double lam[4], V[16], work[64];
-    memcpy(V, H, sizeof V);
-    /* the _work variant: no allocation per corner */
-    if (LAPACKE_dsyev_work(LAPACK_COL_MAJOR, 'V', 'U', 4, V, 4, lam, work, 64) != 0) {
-        memset(H, 0, sizeof(double) * 16);
-        return;
-    }
+    double M11 = 8.0 * b * (3.0 * a + b) / s3, M22 = 8.0 * a * (a + 3.0 * b) / s3,
+           M12 = -16.0 * ra * rb * (a + b) / s3;
+    double half = 0.5 * (M11 - M22), lp = 0.5 * (M11 + M22) + hypot(half, M12);
+    /* of the two (equivalent) forms of the eigenvector, the one away from
+     * cancellation */
+    double v0 = half >= 0.0 ? lp - M22 : M12, v1 = half >= 0.0 ? M12 : lp - M11;
+    double nv = hypot(v0, v1), z[4];
     for (int i = 0; i < 4; i++)
-        for (int j = 0; j < 4; j++) {
-            H[4 * i + j] = 0.0;
-            for (int k = 0; k < 4; k++)
-                H[4 * i + j] += V[4 * k + i] * fmax(lam[k], 0.0) * V[4 * k + j];
-        }
+        z[i] = (v0 * uh[i] + v1 * wh[i]) / nv;
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            H[4 * i + j] = 8.0 * a / s2 * (PM[4 * i + j] - wh[i] * wh[j]) + lp * z[i] * z[j];
 }
 
 /* d e / d z_p for vertex p in role r (0: c, 1: a, 2: b): a 4 x n matrix. */
