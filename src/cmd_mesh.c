@@ -176,6 +176,7 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
         if (args.output) st = write_mesh(args.output, m, err);
         if (st == SQ_OK && args.svg) st = sq_write_quad_svg(args.svg, m, err);
         t.write = sq_now() - t2;
+        t.total = sq_now() - t0;
         if (st == SQ_OK && args.report)
             st = sq_write_mesh_report(args.report, args.input, args.face, &r, m, &q, &t, err);
         if (st == SQ_OK && !args.quiet) printf("%s\n", line);
