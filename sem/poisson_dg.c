@@ -109,9 +109,9 @@ static void edge_point(int k, double t, double rs[2], double d[2])
 /* Per-face tabulation: everything needed on one side of a face. */
 typedef struct {
     int ne, nm, ngn;
-    const double *t, *w;       /* ne points on [0,1] and weights */
-    double *ephi, *edr, *eds;  /* 3*ne*nm: Dubiner on each local edge */
-    double *el, *elr, *els;    /* 3*ne*ngn: geometry Lagrange on each local edge */
+    const double *t, *w;      /* ne points on [0,1] and weights */
+    double *ephi, *edr, *eds; /* 3*ne*nm: Dubiner on each local edge */
+    double *el, *elr, *els;   /* 3*ne*ngn: geometry Lagrange on each local edge */
 } edge_tab;
 
 /* Physical data of element e's edge k at its ne points: x (2ne), outward
@@ -172,21 +172,56 @@ static int edge_side(const edge_tab *E, const double *g, int k, const double *nr
     return 0;
 }
 
-/* Add block M (nm x nm, row-major, rows = test dofs from r0, cols = trial
- * dofs from c0) to the lower triangle; for an off-diagonal block the
- * transposed entry is added too, the sparse matrix keeping the lower one. */
-static sq_status scatter(dg_state *S, const double *M, long r0, long c0, sq_error *err)
+/* Add block M (nm x nm, row-major, rows = test dofs of element e, cols =
+ * trial dofs of element b); an off-diagonal block stands for its transpose
+ * too.  Pure Neumann: the pinned unknown's row and column stay out (M is
+ * work space and is changed). */
+static sq_status scatter(dg_state *S, double *M, long e, long b, sq_error *err)
 {
     const int nm = S->nm;
-    for (int i = 0; i < nm; ++i)
-        for (int j = 0; j < nm; ++j) {
-            const long gi = r0 + i, gj = c0 + j;
-            const double v = M[(size_t)i * nm + j];
-            if (S->pure_neumann && (gi == 0 || gj == 0)) continue;
-            if (gi >= gj) SQ_TRY(sem_sparse_add(S->A, gi, gj, v, err));
-            if (r0 != c0 && gj >= gi) SQ_TRY(sem_sparse_add(S->A, gj, gi, v, err));
-        }
-    return SQ_OK;
+    if (S->pure_neumann && e == 0)
+        for (int j = 0; j < nm; ++j)
+            M[j] = 0.0;
+    if (S->pure_neumann && b == 0)
+        for (int i = 0; i < nm; ++i)
+            M[(size_t)i * nm] = 0.0;
+    return sem_sparse_add_block(S->A, e, b, M, err);
+}
+
+/* The block pattern of the matrix: block column e holds e itself and the
+ * neighbours after it. */
+static sq_status create_matrix(dg_state *S, sq_error *err)
+{
+    const sem_tri_mesh *mesh = S->mesh;
+    const int nt = mesh->ntris;
+    long *bptr = malloc(sizeof(long) * ((size_t)nt + 1)),
+         *brow = malloc(sizeof(long) * 4 * (size_t)nt);
+    if (!bptr || !brow) {
+        free(bptr);
+        free(brow);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_dg_create: out of memory");
+    }
+    long k = 0;
+    for (int e = 0; e < nt; ++e) {
+        bptr[e] = k;
+        brow[k++] = e;
+        int nb[3], n = 0;
+        for (int j = 0; j < 3; ++j)
+            if (mesh->neigh[3 * e + j] > e) nb[n++] = mesh->neigh[3 * e + j];
+        for (int a = 1; a < n; ++a) /* ascending */
+            for (int c = a; c > 0 && nb[c] < nb[c - 1]; --c) {
+                const int t = nb[c];
+                nb[c] = nb[c - 1];
+                nb[c - 1] = t;
+            }
+        for (int j = 0; j < n; ++j)
+            if (j == 0 || nb[j] != nb[j - 1]) brow[k++] = nb[j];
+    }
+    bptr[nt] = k;
+    const sq_status st = sem_sparse_create_blocks(nt, S->nm, bptr, brow, &S->A, err);
+    free(bptr);
+    free(brow);
+    return st;
 }
 
 /* C = alpha A^T B + beta C for A, B of ne x nm (row-major), C nm x nm. */
@@ -201,7 +236,8 @@ static void gemm_tn(int nm, int ne, double alpha, const double *A, const double 
 static void weigh(int ne, int nm, const double *W, const double *in, double *out)
 {
     for (int p = 0; p < ne; ++p)
-        for (int m = 0; m < nm; ++m) out[(size_t)p * nm + m] = W[p] * in[(size_t)p * nm + m];
+        for (int m = 0; m < nm; ++m)
+            out[(size_t)p * nm + m] = W[p] * in[(size_t)p * nm + m];
 }
 
 static sq_status dg_solve(void *state, const sem_poisson_data *data, sem_field *u, sq_error *err);
@@ -212,7 +248,8 @@ static sq_status find_back_edge(const sem_tri_mesh *M, int e, int k, int b, int 
 {
     const int va = M->tri[3 * e + k], vb = M->tri[3 * e + (k + 1) % 3];
     for (int j = 0; j < 3; ++j)
-        if (M->neigh[3 * b + j] == e && M->tri[3 * b + j] == vb && M->tri[3 * b + (j + 1) % 3] == va) {
+        if (M->neigh[3 * b + j] == e && M->tri[3 * b + j] == vb &&
+            M->tri[3 * b + (j + 1) % 3] == va) {
             *kb = j;
             return SQ_OK;
         }
@@ -272,15 +309,18 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
     KT = malloc(sizeof(double) * (size_t)nm * nm);
     area = malloc(sizeof(double) * (size_t)nt);
     S->rhs = malloc(sizeof(double) * (size_t)S->ndofs);
-    if (!S->phiq || !drq || !dsq || !lq || !lrq || !lsq || !S->vx || !B || !K || !KT || !area || !S->rhs) {
+    if (!S->phiq || !drq || !dsq || !lq || !lrq || !lsq || !S->vx || !B || !K || !KT || !area ||
+        !S->rhs) {
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_dg_create: out of memory (%ld unknowns)",
                      S->ndofs);
         goto fail;
     }
     for (int k = 0; k < nq; ++k) {
         const double r = q->rs[2 * k], s = q->rs[2 * k + 1];
-        sem_tri_dubiner(P, r, s, S->phiq + (size_t)k * nm, drq + (size_t)k * nm, dsq + (size_t)k * nm);
-        sem_tri_lagrange_eval(lag, r, s, lq + (size_t)k * ngn, lrq + (size_t)k * ngn, lsq + (size_t)k * ngn);
+        sem_tri_dubiner(P, r, s, S->phiq + (size_t)k * nm, drq + (size_t)k * nm,
+                        dsq + (size_t)k * nm);
+        sem_tri_lagrange_eval(lag, r, s, lq + (size_t)k * ngn, lrq + (size_t)k * ngn,
+                              lsq + (size_t)k * ngn);
     }
 
     /* ---- boundary faces and the kind of each ---- */
@@ -352,15 +392,11 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
             edge_point(k, et[i], rs, d);
             const size_t o = (size_t)k * ne + i;
             sem_tri_dubiner(P, rs[0], rs[1], E.ephi + o * nm, E.edr + o * nm, E.eds + o * nm);
-            sem_tri_lagrange_eval(lag, rs[0], rs[1], E.el + o * ngn, E.elr + o * ngn, E.els + o * ngn);
+            sem_tri_lagrange_eval(lag, rs[0], rs[1], E.el + o * ngn, E.elr + o * ngn,
+                                  E.els + o * ngn);
         }
 
-    /* ---- sparse matrix ---- */
-    {
-        const long nint = (3L * nt - nb) / 2;
-        const long hint = (long)nt * nm * (nm + 1) / 2 + nint * (long)nm * nm + 1;
-        if ((st = sem_sparse_create(S->ndofs, hint, &S->A, err)) != SQ_OK) goto fail;
-    }
+    if ((st = create_matrix(S, err)) != SQ_OK) goto fail;
 
     /* ---- volume terms: K = B^T B with B rows sqrt(w det J) grad phi ---- */
     S->area = 0.0;
@@ -408,7 +444,7 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
          * tall-skinny shapes */
         cblas_dgemm(CblasRowMajor, CblasTrans, CblasNoTrans, nm, nm, 2 * nq, 1.0, B, nm, B, nm, 0.0,
                     K, nm);
-        if ((st = scatter(S, K, (long)e * nm, (long)e * nm, err)) != SQ_OK) goto fail;
+        if ((st = scatter(S, K, e, e, err)) != SQ_OK) goto fail;
     }
 
     /* ---- face terms ---- */
@@ -416,7 +452,8 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
         const double pp = (double)(P + 1) * (P + 2);
         double *x = fa, *nrm = fa + 2 * ne, *W = fa + 4 * ne, *Wb = fa + 5 * ne;
         double *va = fa + 7 * ne, *ga = va + (size_t)ne * nm, *vb = ga + (size_t)ne * nm,
-               *gb = vb + (size_t)ne * nm, *wva = gb + (size_t)ne * nm, *wvb = wva + (size_t)ne * nm;
+               *gb = vb + (size_t)ne * nm, *wva = gb + (size_t)ne * nm,
+               *wvb = wva + (size_t)ne * nm;
         double *Kaa = K, *Kab = K + (size_t)nm * nm, *Kbb = K + 2 * (size_t)nm * nm;
         int ib = 0;
         for (int e = 0; e < nt; ++e)
@@ -425,11 +462,13 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
                 if (b >= 0 && b < e) continue; /* each interior face once */
                 const double *ge = mesh->gxy + 2 * (size_t)ngn * e;
                 if (edge_side(&E, ge, k, NULL, 0, x, nrm, W, va, ga) != 0) {
-                    st = SQ_FAIL(err, SQ_ERR_USAGE, "poisson_dg_create: element %d has det J <= 0 on edge %d", e, k);
+                    st = SQ_FAIL(err, SQ_ERR_USAGE,
+                                 "poisson_dg_create: element %d has det J <= 0 on edge %d", e, k);
                     goto fail;
                 }
                 double len = 0.0;
-                for (int i = 0; i < ne; ++i) len += W[i];
+                for (int i = 0; i < ne; ++i)
+                    len += W[i];
                 if (b < 0) {
                     /* boundary face: keep its data for the right-hand sides */
                     const double sig = 2.0 * DG_PENALTY * pp * len / area[e];
@@ -451,8 +490,9 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
                         gemm_tn(nm, ne, 1.0, wva, ga, 0.0, KT);
                         for (int i = 0; i < nm; ++i)
                             for (int j = 0; j < nm; ++j)
-                                Kaa[(size_t)i * nm + j] -= KT[(size_t)i * nm + j] + KT[(size_t)j * nm + i];
-                        if ((st = scatter(S, Kaa, (long)e * nm, (long)e * nm, err)) != SQ_OK) goto fail;
+                                Kaa[(size_t)i * nm + j] -=
+                                    KT[(size_t)i * nm + j] + KT[(size_t)j * nm + i];
+                        if ((st = scatter(S, Kaa, e, e, err)) != SQ_OK) goto fail;
                     }
                     ++ib;
                     continue;
@@ -463,7 +503,8 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
                 /* the neighbour's side, its points reversed, derivatives along
                  * the + side's normal */
                 if (edge_side(&E, gbn, kb, nrm, 1, NULL, NULL, Wb, vb, gb) != 0) {
-                    st = SQ_FAIL(err, SQ_ERR_USAGE, "poisson_dg_create: element %d has det J <= 0 on edge %d", b, kb);
+                    st = SQ_FAIL(err, SQ_ERR_USAGE,
+                                 "poisson_dg_create: element %d has det J <= 0 on edge %d", b, kb);
                     goto fail;
                 }
                 const double sig = DG_PENALTY * pp * fmax(len / area[e], len / area[b]);
@@ -477,20 +518,23 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
                 gemm_tn(nm, ne, 1.0, wva, ga, 0.0, KT);
                 for (int i = 0; i < nm; ++i)
                     for (int j = 0; j < nm; ++j)
-                        Kaa[(size_t)i * nm + j] -= 0.5 * (KT[(size_t)i * nm + j] + KT[(size_t)j * nm + i]);
+                        Kaa[(size_t)i * nm + j] -=
+                            0.5 * (KT[(size_t)i * nm + j] + KT[(size_t)j * nm + i]);
                 gemm_tn(nm, ne, -sig, wva, vb, 0.0, Kab);
                 gemm_tn(nm, ne, -0.5, wva, gb, 1.0, Kab);
                 gemm_tn(nm, ne, 1.0, wvb, ga, 0.0, KT);
                 for (int i = 0; i < nm; ++i)
-                    for (int j = 0; j < nm; ++j) Kab[(size_t)i * nm + j] += 0.5 * KT[(size_t)j * nm + i];
+                    for (int j = 0; j < nm; ++j)
+                        Kab[(size_t)i * nm + j] += 0.5 * KT[(size_t)j * nm + i];
                 gemm_tn(nm, ne, sig, wvb, vb, 0.0, Kbb);
                 gemm_tn(nm, ne, 1.0, wvb, gb, 0.0, KT);
                 for (int i = 0; i < nm; ++i)
                     for (int j = 0; j < nm; ++j)
-                        Kbb[(size_t)i * nm + j] += 0.5 * (KT[(size_t)i * nm + j] + KT[(size_t)j * nm + i]);
-                if ((st = scatter(S, Kaa, (long)e * nm, (long)e * nm, err)) != SQ_OK) goto fail;
-                if ((st = scatter(S, Kab, (long)e * nm, (long)b * nm, err)) != SQ_OK) goto fail;
-                if ((st = scatter(S, Kbb, (long)b * nm, (long)b * nm, err)) != SQ_OK) goto fail;
+                        Kbb[(size_t)i * nm + j] +=
+                            0.5 * (KT[(size_t)i * nm + j] + KT[(size_t)j * nm + i]);
+                if ((st = scatter(S, Kaa, e, e, err)) != SQ_OK) goto fail;
+                if ((st = scatter(S, Kab, e, b, err)) != SQ_OK) goto fail;
+                if ((st = scatter(S, Kbb, b, b, err)) != SQ_OK) goto fail;
             }
     }
 
@@ -506,7 +550,8 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
         for (int e = 0; e < nt; ++e)
             for (int k = 0; k < nq; ++k) {
                 const double wd = S->vx[3 * ((size_t)nq * e + k) + 2];
-                for (int m = 0; m < nm; ++m) S->mom[(size_t)e * nm + m] += wd * S->phiq[(size_t)k * nm + m];
+                for (int m = 0; m < nm; ++m)
+                    S->mom[(size_t)e * nm + m] += wd * S->phiq[(size_t)k * nm + m];
             }
     }
     st = sem_sparse_factor(S->A, err);
@@ -563,7 +608,8 @@ static sq_status dg_solve(void *state, const sem_poisson_data *data, sem_field *
                 sum_f += fw;
                 abs_f += fabs(fw);
                 const double *phi = S->phiq + (size_t)k * nm;
-                for (int m = 0; m < nm; ++m) be[m] += fw * phi[m];
+                for (int m = 0; m < nm; ++m)
+                    be[m] += fw * phi[m];
             }
         }
     }
@@ -580,11 +626,13 @@ static sq_status dg_solve(void *state, const sem_poisson_data *data, sem_field *
                 const double *p = phi + (size_t)i * nm, *d = dn + (size_t)i * nm;
                 if (S->bdir[ib]) {
                     const double a = W * gv * S->bsig[ib], c = W * gv;
-                    for (int m = 0; m < nm; ++m) be[m] += a * p[m] - c * d[m];
+                    for (int m = 0; m < nm; ++m)
+                        be[m] += a * p[m] - c * d[m];
                 } else {
                     sum_g += W * gv;
                     abs_g += fabs(W * gv);
-                    for (int m = 0; m < nm; ++m) be[m] += W * gv * p[m];
+                    for (int m = 0; m < nm; ++m)
+                        be[m] += W * gv * p[m];
                 }
             }
         }
@@ -602,7 +650,8 @@ static sq_status dg_solve(void *state, const sem_poisson_data *data, sem_field *
                                ps->elem, nt - 1);
             sem_tri_dubiner(S->P, ps->r, ps->s, phi, NULL, NULL);
             double *be = b + (size_t)ps->elem * nm;
-            for (int m = 0; m < nm; ++m) be[m] += ps->strength * phi[m];
+            for (int m = 0; m < nm; ++m)
+                be[m] += ps->strength * phi[m];
             sum_c += ps->strength;
             abs_c += fabs(ps->strength);
         }
@@ -616,17 +665,21 @@ static sq_status dg_solve(void *state, const sem_poisson_data *data, sem_field *
                            imb, sum_f, sum_g, sum_c);
         /* remove the (round-off) imbalance as a uniform source */
         const double a = imb / S->area;
-        for (long i = 0; i < S->ndofs; ++i) b[i] -= a * S->mom[i];
+        for (long i = 0; i < S->ndofs; ++i)
+            b[i] -= a * S->mom[i];
         b[0] = 0.0;
     }
     SQ_TRY(sem_sparse_solve(S->A, b, b, err));
     if (S->pure_neumann) {
         double mean = 0.0;
-        for (long i = 0; i < S->ndofs; ++i) mean += b[i] * S->mom[i];
+        for (long i = 0; i < S->ndofs; ++i)
+            mean += b[i] * S->mom[i];
         mean /= S->area;
         /* phi_0 = sqrt(2): the constant 1 has mode-0 coefficient 1/sqrt(2) */
-        for (int e = 0; e < nt; ++e) b[(size_t)e * nm] -= mean / sqrt(2.0);
+        for (int e = 0; e < nt; ++e)
+            b[(size_t)e * nm] -= mean / sqrt(2.0);
     }
-    for (long i = 0; i < S->ndofs; ++i) u->coef[i] = b[i];
+    for (long i = 0; i < S->ndofs; ++i)
+        u->coef[i] = b[i];
     return SQ_OK;
 }

@@ -1,29 +1,33 @@
 /* semquad sem/ — sparse SPD systems with CHOLMOD (Davis, SuiteSparse):
- * lower-triangle triplets (stype -1), summed into a compressed matrix,
- * analysed (fill-reducing ordering) and factored once, then solved for as
- * many right-hand sides as needed.  The cholmod_common lives in the object:
- * no global state, and CHOLMOD is told not to print. */
+ * the lower triangle (stype -1) assembled from triplets (duplicates summed
+ * by the compression) or in place in a known block pattern, analysed
+ * (fill-reducing ordering) and factored, then solved for as many
+ * right-hand sides as needed.  The cholmod_common lives in the object: no
+ * global state, and CHOLMOD is told not to print. */
 #include "sparse.h"
 
 #include <cholmod.h>
 #include <stdlib.h>
 #include <string.h>
 
+typedef SuiteSparse_long sslong;
+
 struct sem_sparse {
     long n;
     cholmod_common cc;
     int cc_started;
-    cholmod_triplet *T; /* assembly; freed once factored */
+    int assembling;     /* values may be added; no factorization to solve with */
+    cholmod_triplet *T; /* triplet assembly under way */
+    cholmod_sparse *A;  /* block assembly, or the pattern of the last factorization */
+    long nblocks;       /* block pattern (0: triplets) */
+    int bs;
+    sslong *bptr, *brow; /* block columns: as given to sem_sparse_create_blocks */
     cholmod_factor *L;
-    cholmod_dense *b;   /* n x 1 right-hand side workspace */
+    cholmod_dense *b; /* n x 1 right-hand side workspace */
 };
 
-sq_status sem_sparse_create(long n, long nnz_hint, sem_sparse **out, sq_error *err)
+static sq_status start(long n, sem_sparse **out, sq_error *err)
 {
-    if (!out) return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_create: NULL output");
-    *out = NULL;
-    if (n <= 0) return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_create: size %ld <= 0", n);
-    if (nnz_hint < n) nnz_hint = n;
     sem_sparse *a = calloc(1, sizeof *a);
     if (!a) return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_create: out of memory");
     a->n = n;
@@ -34,12 +38,85 @@ sq_status sem_sparse_create(long n, long nnz_hint, sem_sparse **out, sq_error *e
     /* LL' also in the simplicial case: an LDL' factorization would accept
      * an indefinite matrix, which must be reported instead. */
     a->cc.final_ll = 1;
+    a->assembling = 1;
+    *out = a;
+    return SQ_OK;
+}
+
+sq_status sem_sparse_create(long n, long nnz_hint, sem_sparse **out, sq_error *err)
+{
+    if (!out) return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_create: NULL output");
+    *out = NULL;
+    if (n <= 0) return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_create: size %ld <= 0", n);
+    if (nnz_hint < n) nnz_hint = n;
+    sem_sparse *a = NULL;
+    SQ_TRY(start(n, &a, err));
     a->T = cholmod_l_allocate_triplet((size_t)n, (size_t)n, (size_t)nnz_hint, -1, CHOLMOD_REAL,
                                       &a->cc);
     if (!a->T) {
         sem_sparse_free(&a);
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_create: out of memory (%ld entries)", nnz_hint);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_create: out of memory (%ld entries)",
+                       nnz_hint);
     }
+    *out = a;
+    return SQ_OK;
+}
+
+sq_status sem_sparse_create_blocks(long nblocks, int bs, const long *bptr, const long *brow,
+                                   sem_sparse **out, sq_error *err)
+{
+    if (!out) return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_create_blocks: NULL output");
+    *out = NULL;
+    if (nblocks <= 0 || bs <= 0 || !bptr || !brow || nblocks > 2000000000L / bs)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_create_blocks: %ld blocks of size %d", nblocks,
+                       bs);
+    if (bptr[0] != 0) return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_create_blocks: bptr[0] != 0");
+    for (long j = 0; j < nblocks; ++j) {
+        if (bptr[j + 1] <= bptr[j] || brow[bptr[j]] != j)
+            return SQ_FAIL(err, SQ_ERR_USAGE,
+                           "sparse_create_blocks: block column %ld does not start with its "
+                           "diagonal block",
+                           j);
+        for (long p = bptr[j] + 1; p < bptr[j + 1]; ++p)
+            if (brow[p] <= brow[p - 1] || brow[p] >= nblocks)
+                return SQ_FAIL(err, SQ_ERR_USAGE,
+                               "sparse_create_blocks: block rows of column %ld not ascending "
+                               "in %ld..%ld",
+                               j, j, nblocks - 1);
+    }
+    const long n = nblocks * bs, nbe = bptr[nblocks];
+    const size_t nnz = (size_t)nblocks * bs * (bs + 1) / 2 + (size_t)(nbe - nblocks) * bs * bs;
+    sem_sparse *a = NULL;
+    SQ_TRY(start(n, &a, err));
+    a->nblocks = nblocks;
+    a->bs = bs;
+    a->bptr = malloc(sizeof(sslong) * (size_t)(nblocks + 1));
+    a->brow = malloc(sizeof(sslong) * (size_t)nbe);
+    a->A = cholmod_l_allocate_sparse((size_t)n, (size_t)n, nnz, 1, 1, -1, CHOLMOD_REAL, &a->cc);
+    if (!a->bptr || !a->brow || !a->A) {
+        sem_sparse_free(&a);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_create_blocks: out of memory (%zu entries)",
+                       nnz);
+    }
+    for (long j = 0; j <= nblocks; ++j)
+        a->bptr[j] = bptr[j];
+    for (long p = 0; p < nbe; ++p)
+        a->brow[p] = brow[p];
+    /* column c of block column j: the diagonal block's rows c.., then the
+     * off-diagonal blocks' rows, all ascending */
+    sslong *Ap = a->A->p, *Ai = a->A->i;
+    size_t k = 0;
+    for (long j = 0; j < nblocks; ++j)
+        for (int jj = 0; jj < bs; ++jj) {
+            Ap[j * bs + jj] = (sslong)k;
+            for (int r = jj; r < bs; ++r)
+                Ai[k++] = j * bs + r;
+            for (long p = bptr[j] + 1; p < bptr[j + 1]; ++p)
+                for (int r = 0; r < bs; ++r)
+                    Ai[k++] = brow[p] * bs + r;
+        }
+    Ap[n] = (sslong)k;
+    memset(a->A->x, 0, sizeof(double) * nnz);
     *out = a;
     return SQ_OK;
 }
@@ -50,21 +127,61 @@ void sem_sparse_free(sem_sparse **pa)
     sem_sparse *a = *pa;
     if (a->cc_started) {
         if (a->T) cholmod_l_free_triplet(&a->T, &a->cc);
+        if (a->A) cholmod_l_free_sparse(&a->A, &a->cc);
         if (a->L) cholmod_l_free_factor(&a->L, &a->cc);
         if (a->b) cholmod_l_free_dense(&a->b, &a->cc);
         cholmod_l_finish(&a->cc);
     }
+    free(a->bptr);
+    free(a->brow);
     free(a);
     *pa = NULL;
 }
 
+static sq_status not_assembling(const sem_sparse *a, const char *fn, sq_error *err)
+{
+    if (!a) return SQ_FAIL(err, SQ_ERR_USAGE, "%s: NULL matrix", fn);
+    if (!a->assembling)
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "%s: matrix already factored (sem_sparse_reset starts a new assembly)", fn);
+    return SQ_OK;
+}
+
+/* Index in A->x of the first row of block row bi in column c of block
+ * column bj (bi >= bj), or -1 if that block is not in the pattern. */
+static long block_entry(const sem_sparse *a, long bi, long bj, long c)
+{
+    const sslong *Ap = a->A->p;
+    const int jj = (int)(c - bj * a->bs);
+    if (bi == bj) return (long)Ap[c] - jj; /* row bj bs of the diagonal block */
+    long lo = a->bptr[bj] + 1, hi = a->bptr[bj + 1] - 1;
+    while (lo <= hi) {
+        const long mid = (lo + hi) / 2;
+        if (a->brow[mid] == bi)
+            return (long)Ap[c] + (a->bs - jj) + (mid - a->bptr[bj] - 1) * (long)a->bs;
+        if (a->brow[mid] < bi)
+            lo = mid + 1;
+        else
+            hi = mid - 1;
+    }
+    return -1;
+}
+
 sq_status sem_sparse_add(sem_sparse *a, long i, long j, double v, sq_error *err)
 {
-    if (!a || !a->T) return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_add: matrix already factored");
+    SQ_TRY(not_assembling(a, "sparse_add", err));
     if (i < 0 || j < 0 || i >= a->n || j >= a->n)
         return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_add: entry (%ld,%ld) outside %ld x %ld", i, j,
                        a->n, a->n);
     if (i < j) return SQ_OK; /* upper triangle: the symmetric twin is added */
+    if (a->nblocks) {
+        const long bi = i / a->bs, bj = j / a->bs, k = block_entry(a, bi, bj, j);
+        if (k < 0)
+            return SQ_FAIL(err, SQ_ERR_USAGE,
+                           "sparse_add: entry (%ld,%ld) outside the block pattern", i, j);
+        ((double *)a->A->x)[k + (i - bi * a->bs)] += v;
+        return SQ_OK;
+    }
     cholmod_triplet *T = a->T;
     if (T->nnz == T->nzmax) {
         if (!cholmod_l_reallocate_triplet(2 * T->nzmax, T, &a->cc))
@@ -72,27 +189,110 @@ sq_status sem_sparse_add(sem_sparse *a, long i, long j, double v, sq_error *err)
                            2 * T->nzmax);
     }
     const size_t k = T->nnz++;
-    ((SuiteSparse_long *)T->i)[k] = i;
-    ((SuiteSparse_long *)T->j)[k] = j;
+    ((sslong *)T->i)[k] = i;
+    ((sslong *)T->j)[k] = j;
     ((double *)T->x)[k] = v;
     return SQ_OK;
 }
 
-sq_status sem_sparse_factor(sem_sparse *a, sq_error *err)
+sq_status sem_sparse_add_block(sem_sparse *a, long bi, long bj, const double *M, sq_error *err)
 {
-    if (!a || !a->T) return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_factor: nothing to factor");
-    /* Duplicates are summed by the conversion. */
-    cholmod_sparse *A = cholmod_l_triplet_to_sparse(a->T, a->T->nnz, &a->cc);
-    if (!A) return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_factor: out of memory (compressing)");
-    cholmod_l_free_triplet(&a->T, &a->cc);
-    a->L = cholmod_l_analyze(A, &a->cc);
-    if (!a->L) {
-        cholmod_l_free_sparse(&A, &a->cc);
+    SQ_TRY(not_assembling(a, "sparse_add_block", err));
+    if (!a->nblocks)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_add_block: the matrix has no block pattern");
+    if (bi < 0 || bj < 0 || bi >= a->nblocks || bj >= a->nblocks || !M)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_add_block: block (%ld,%ld) outside %ld x %ld", bi,
+                       bj, a->nblocks, a->nblocks);
+    const int bs = a->bs;
+    /* stored block (row R, column C); M or its transpose */
+    const long R = bi > bj ? bi : bj, C = bi > bj ? bj : bi;
+    const int tr = bi < bj;
+    double *x = a->A->x;
+    for (int c = 0; c < bs; ++c) {
+        const long k = block_entry(a, R, C, C * bs + c);
+        if (k < 0)
+            return SQ_FAIL(err, SQ_ERR_USAGE,
+                           "sparse_add_block: block (%ld,%ld) outside the block pattern", bi, bj);
+        for (int r = R == C ? c : 0; r < bs; ++r)
+            x[k + r] += tr ? M[(size_t)c * bs + r] : M[(size_t)r * bs + c];
+    }
+    return SQ_OK;
+}
+
+/* Fill-reducing ordering of a block pattern: CHOLMOD's own choice of
+ * ordering for the graph of blocks, each block's unknowns kept together. */
+static sq_status block_ordering(sem_sparse *a, sslong *perm, sq_error *err)
+{
+    const long nb = a->nblocks, nbe = a->bptr[nb];
+    cholmod_sparse *G = cholmod_l_allocate_sparse((size_t)nb, (size_t)nb, (size_t)nbe, 1, 1, -1,
+                                                  CHOLMOD_PATTERN, &a->cc);
+    if (!G) return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_factor: out of memory (block graph)");
+    memcpy(G->p, a->bptr, sizeof(sslong) * (size_t)(nb + 1));
+    memcpy(G->i, a->brow, sizeof(sslong) * (size_t)nbe);
+    cholmod_factor *Lb = cholmod_l_analyze(G, &a->cc);
+    cholmod_l_free_sparse(&G, &a->cc);
+    if (!Lb)
+        return SQ_FAIL(err, SQ_ERR_INTERNAL,
+                       "sparse_factor: ordering the block graph failed (CHOLMOD status %d)",
+                       a->cc.status);
+    const sslong *bp = Lb->Perm;
+    for (long k = 0; k < nb; ++k)
+        for (int r = 0; r < a->bs; ++r)
+            perm[k * a->bs + r] = bp[k] * a->bs + r;
+    cholmod_l_free_factor(&Lb, &a->cc);
+    return SQ_OK;
+}
+
+static sq_status analyze(sem_sparse *a, sq_error *err)
+{
+    if (!a->nblocks) {
+        a->L = cholmod_l_analyze(a->A, &a->cc);
+    } else {
+        sslong *perm = malloc(sizeof(sslong) * (size_t)a->n);
+        if (!perm) return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_factor: out of memory");
+        sq_status st = block_ordering(a, perm, err);
+        if (st != SQ_OK) {
+            free(perm);
+            return st;
+        }
+        const int nmethods = a->cc.nmethods, ordering = a->cc.method[0].ordering;
+        a->cc.nmethods = 1;
+        a->cc.method[0].ordering = CHOLMOD_GIVEN;
+        a->L = cholmod_l_analyze_p(a->A, perm, NULL, 0, &a->cc);
+        a->cc.nmethods = nmethods;
+        a->cc.method[0].ordering = ordering;
+        free(perm);
+    }
+    if (!a->L)
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_factor: analysis failed (CHOLMOD status %d)",
                        a->cc.status);
+    return SQ_OK;
+}
+
+static int same_pattern(const cholmod_sparse *A, const cholmod_sparse *B)
+{
+    if (A->ncol != B->ncol || ((const sslong *)A->p)[A->ncol] != ((const sslong *)B->p)[B->ncol])
+        return 0;
+    const size_t nz = (size_t)((const sslong *)A->p)[A->ncol];
+    return !memcmp(A->p, B->p, sizeof(sslong) * (A->ncol + 1)) &&
+           !memcmp(A->i, B->i, sizeof(sslong) * nz);
+}
+
+sq_status sem_sparse_factor(sem_sparse *a, sq_error *err)
+{
+    SQ_TRY(not_assembling(a, "sparse_factor", err));
+    if (!a->nblocks) {
+        /* Duplicates are summed by the conversion. */
+        cholmod_sparse *A = cholmod_l_triplet_to_sparse(a->T, a->T->nnz, &a->cc);
+        if (!A) return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_factor: out of memory (compressing)");
+        cholmod_l_free_triplet(&a->T, &a->cc);
+        if (a->L && !same_pattern(a->A, A)) cholmod_l_free_factor(&a->L, &a->cc);
+        if (a->A) cholmod_l_free_sparse(&a->A, &a->cc);
+        a->A = A;
     }
-    const int ok = cholmod_l_factorize(A, a->L, &a->cc);
-    cholmod_l_free_sparse(&A, &a->cc);
+    a->assembling = 0;
+    if (!a->L) SQ_TRY(analyze(a, err));
+    const int ok = cholmod_l_factorize(a->A, a->L, &a->cc);
     if (!ok || a->cc.status == CHOLMOD_NOT_POSDEF || a->L->minor < a->L->n) {
         const long minor = (long)a->L->minor;
         const int status = a->cc.status;
@@ -101,24 +301,43 @@ sq_status sem_sparse_factor(sem_sparse *a, sq_error *err)
             return SQ_FAIL(err, SQ_ERR_INTERNAL,
                            "sparse_factor: matrix (n = %ld) is not positive definite (pivot %ld)",
                            a->n, minor);
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_factor: factorization failed (CHOLMOD status %d)",
-                       status);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL,
+                       "sparse_factor: factorization failed (CHOLMOD status %d)", status);
     }
-    a->b = cholmod_l_allocate_dense((size_t)a->n, 1, (size_t)a->n, CHOLMOD_REAL, &a->cc);
     if (!a->b) {
-        cholmod_l_free_factor(&a->L, &a->cc);
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_factor: out of memory");
+        a->b = cholmod_l_allocate_dense((size_t)a->n, 1, (size_t)a->n, CHOLMOD_REAL, &a->cc);
+        if (!a->b) {
+            cholmod_l_free_factor(&a->L, &a->cc);
+            return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_factor: out of memory");
+        }
     }
+    return SQ_OK;
+}
+
+sq_status sem_sparse_reset(sem_sparse *a, sq_error *err)
+{
+    if (!a || a->assembling || !a->L)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_reset: no factorization to start again from");
+    if (a->nblocks) {
+        memset(a->A->x, 0, sizeof(double) * a->A->nzmax);
+    } else {
+        a->T = cholmod_l_allocate_triplet((size_t)a->n, (size_t)a->n, a->A->nzmax, -1, CHOLMOD_REAL,
+                                          &a->cc);
+        if (!a->T) return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_reset: out of memory");
+    }
+    a->assembling = 1;
     return SQ_OK;
 }
 
 sq_status sem_sparse_solve(sem_sparse *a, const double *b, double *x, sq_error *err)
 {
-    if (!a || !a->L) return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_solve: matrix not factored");
+    if (!a || !a->L || a->assembling)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_solve: matrix not factored");
     memcpy(a->b->x, b, sizeof(double) * (size_t)a->n);
     cholmod_dense *X = cholmod_l_solve(CHOLMOD_A, a->L, a->b, &a->cc);
-    if (!X) return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_solve: CHOLMOD solve failed (status %d)",
-                           a->cc.status);
+    if (!X)
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_solve: CHOLMOD solve failed (status %d)",
+                       a->cc.status);
     memcpy(x, X->x, sizeof(double) * (size_t)a->n);
     cholmod_l_free_dense(&X, &a->cc);
     return SQ_OK;

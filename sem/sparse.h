@@ -1,6 +1,14 @@
-/* semquad sem/ — global sparse symmetric positive definite systems:
- * triplet assembly, CHOLMOD factorization once, solves for many right-hand
- * sides. */
+/* semquad sem/ — global sparse symmetric positive definite systems,
+ * factored by CHOLMOD and solved for many right-hand sides.
+ *
+ * Two ways to assemble the lower triangle:
+ *  - triplets (sem_sparse_create): any entries, duplicates summed;
+ *  - a block pattern known in advance (sem_sparse_create_blocks): values
+ *    are summed in place in the compressed matrix, and the fill-reducing
+ *    ordering is computed on the (much smaller) graph of blocks.
+ * After a factorization, sem_sparse_reset starts a new assembly of a
+ * matrix with the same pattern; its factorization reuses the symbolic
+ * analysis (Newton iterations, repeated solves). */
 #ifndef SEM_SPARSE_H
 #define SEM_SPARSE_H
 
@@ -10,16 +18,35 @@ typedef struct sem_sparse sem_sparse; /* opaque */
 
 /* An n x n symmetric matrix to be assembled from about nnz_hint entries. */
 sq_status sem_sparse_create(long n, long nnz_hint, sem_sparse **out, sq_error *err);
+
+/* An (nblocks bs) x (nblocks bs) symmetric matrix made of bs x bs blocks:
+ * block column j holds, in its lower triangle, the block rows
+ * brow[bptr[j]] < ... < brow[bptr[j+1]-1], the first being j itself (the
+ * diagonal block).  All values start at zero. */
+sq_status sem_sparse_create_blocks(long nblocks, int bs, const long *bptr, const long *brow,
+                                   sem_sparse **out, sq_error *err);
 void sem_sparse_free(sem_sparse **a); /* NULL-safe, NULLs *a */
 
 /* Add v to A(i,j), duplicates summed.  A is symmetric and stored by its
  * lower triangle: entries with i < j are ignored, so a whole symmetric
- * element matrix can be scattered as it is. */
+ * element matrix can be scattered as it is.  With a block pattern, (i,j)
+ * must lie in one of its blocks. */
 sq_status sem_sparse_add(sem_sparse *a, long i, long j, double v, sq_error *err);
+
+/* Add the block M (bs x bs, row-major: M[r bs + c] goes to A(bi bs + r,
+ * bj bs + c)) of a matrix made with sem_sparse_create_blocks.  For bi = bj
+ * only M's lower triangle is read; for bi != bj the block stands for
+ * itself and its transpose, whichever of the two is stored. */
+sq_status sem_sparse_add_block(sem_sparse *a, long bi, long bj, const double *M, sq_error *err);
 
 /* Compress and factor (Cholesky, CHOLMOD's supernodal/simplicial choice).
  * SQ_ERR_INTERNAL if A is not positive definite. */
 sq_status sem_sparse_factor(sem_sparse *a, sq_error *err);
+
+/* After sem_sparse_factor: forget the values and start assembling anew;
+ * the next sem_sparse_factor keeps the symbolic analysis if the pattern
+ * (after duplicates are summed) has not changed. */
+sq_status sem_sparse_reset(sem_sparse *a, sq_error *err);
 
 /* Solve A x = b (b and x of length n, may alias) with the factorization. */
 sq_status sem_sparse_solve(sem_sparse *a, const double *b, double *x, sq_error *err);

@@ -58,7 +58,8 @@ sq_status sq_field_winding(const sq_guiding_field *g, const double c[2], double 
                                "index circle of radius %g around (%g, %g) leaves the face", rho,
                                c[0], c[1]);
             }
-            if (k == 0) memcpy(first, cur, sizeof first);
+            if (k == 0)
+                memcpy(first, cur, sizeof first);
             else {
                 double d = turn(prev, cur);
                 if (fabs(d) > 0.5 * M_PI) ok = 0; /* too coarse: refine */
@@ -81,7 +82,7 @@ static int flag_element(const sem_field *f, int e, int S, double best[2])
 {
     double umin = HUGE_VAL, umax = -HUGE_VAL, vmin = HUGE_VAL, vmax = -HUGE_VAL, bmin = HUGE_VAL;
     for (int j = 0; j <= S; j++)
-        for (int i = 0; i + j <= S; i++) {
+        for (int i = 0; i <= S - j; i++) {
             double r = (double)i / S, s = (double)j / S, uv[2];
             sem_field_eval_ref(f, e, r, s, uv, NULL, NULL);
             umin = fmin(umin, uv[0]);
@@ -134,13 +135,22 @@ static int newton_local(const sem_field *f, int e, double *r, double *s)
  * search continues in the element that holds it (a root is owned by the
  * element containing it; NekMesh drops such roots).  A DG field jumps across
  * edges, so a root within DG_MARGIN of its element (in reference units) is
- * accepted where it is.  Returns 0 with the owner and its (r, s). */
+ * accepted where it is.  A zero on an edge (or a vertex) of a DG field can
+ * also leave every polynomial around it with its root just across, in the
+ * next element: the hops then come back to an element already seen, and the
+ * candidate nearest its own element, if within DG_EDGE_MARGIN, is taken,
+ * moved onto that element's boundary (the equilateral triangle's centre at
+ * P = 4, a mesh vertex).  Returns 0 with the owner and its (r, s). */
 #define DG_MARGIN 1e-6
+#define DG_EDGE_MARGIN 0.05
 static int newton(const sq_guiding_field *g, int e, double r, double s, int *eo, double *ro,
                   double *so)
 {
     const sem_locator *loc = sem_field_evaluator_locator(g->ev);
+    int seen[NEWTON_MAX_HOPS + 1], nseen = 0, be = -1;
+    double bmargin = DG_EDGE_MARGIN, br = 0.0, bs = 0.0;
     for (int hop = 0; hop <= NEWTON_MAX_HOPS; hop++) {
+        seen[nseen++] = e;
         if (newton_local(g->uv, e, &r, &s)) return 1;
         double margin = fmax(fmax(-r, -s), r + s - 1.0);
         if (margin <= DG_MARGIN) {
@@ -152,10 +162,28 @@ static int newton(const sq_guiding_field *g, int e, double r, double s, int *eo,
             *so = s;
             return 0;
         }
+        if (margin < bmargin) be = e, bmargin = margin, br = r, bs = s;
         double x[2];
         int en;
         sem_locator_map(loc, e, r, s, x, NULL);
         if (sem_locator_find(loc, x, e, &en, &r, &s)) return 1; /* left the face */
+        int cycle = 0;
+        for (int k = 0; k < nseen && !cycle; k++)
+            cycle = seen[k] == en;
+        if (cycle) {
+            if (be < 0) return 1;
+            br = fmax(br, 0.0);
+            bs = fmax(bs, 0.0);
+            if (br + bs > 1.0) {
+                const double d = 0.5 * (br + bs - 1.0);
+                br = fmax(br - d, 0.0);
+                bs = fmax(bs - d, 0.0);
+            }
+            *eo = be;
+            *ro = br;
+            *so = bs;
+            return 0;
+        }
         e = en;
     }
     return 1;
@@ -247,7 +275,11 @@ sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *fac
             }
             double uv[2];
             sem_field_eval_ref(g->uv, er, rr, sr, uv, NULL, NULL);
-            p[n] = (sq_critical_point){.x = x[0], .y = x[1], .elem = er, .r = rr, .s = sr,
+            p[n] = (sq_critical_point){.x = x[0],
+                                       .y = x[1],
+                                       .elem = er,
+                                       .r = rr,
+                                       .s = sr,
                                        .residual = hypot(uv[0], uv[1])};
             n++;
         }

@@ -46,6 +46,7 @@ sq_status sq_write_mesh_report(const char *path, const char *input, int face,
     sq_json_key_number(&j, "layout", t->layout);
     sq_json_key_number(&j, "mesh", t->mesh);
     sq_json_key_number(&j, "write", t->write);
+    sq_json_key_number(&j, "total", t->total);
     sq_json_end_object(&j);
     sq_json_end_object(&j);
     return sq_outfile_commit(&f, err);

@@ -6,8 +6,10 @@
 #include "layout_pipeline.h"
 #include "quad_mesh.h"
 
+/* seconds per stage; total: from reading the file to the last output
+ * written, the whole command after the process has started */
 typedef struct {
-    double read, triangulate, solve, critical_points, trace, layout, mesh, write;
+    double read, triangulate, solve, critical_points, trace, layout, mesh, write, total;
 } sq_mesh_timings;
 
 sq_status sq_write_mesh_report(const char *path, const char *input, int face,

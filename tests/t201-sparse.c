@@ -4,11 +4,141 @@
  *    ignored) with duplicates summed: A x = b for a known x, twice (one
  *    factorization, two right-hand sides, b and x aliased), to 1e-12;
  *  - [[1, 2], [2, 1]] (indefinite) is reported as not positive definite;
- *  - out-of-range entries are refused. */
+ *  - out-of-range entries are refused;
+ *  - reset and refactor: a second matrix of the same pattern (values
+ *    changed) and a third of another pattern, solved to 1e-12;
+ *  - a block pattern (5 blocks of 3, a path 0-1-2-3-4 plus 0-4): blocks
+ *    added from either side (the transposed one), single entries, the
+ *    same solve to 1e-12 and again after a reset; entries and blocks
+ *    outside the pattern and a malformed pattern are refused. */
 #include "sparse.h"
 #include "test_util.h"
 
 #define N 200
+
+/* max relative error of solving A x = b for a known x (A dense, n x n) */
+static double solve_error(sem_sparse *a, int n, const double *A, int *fails)
+{
+    double x[32], b[32];
+    sq_error err = {0};
+    for (int i = 0; i < n; ++i)
+        x[i] = 1.0 + 0.1 * i - 0.02 * i * i;
+    for (int i = 0; i < n; ++i) {
+        b[i] = 0.0;
+        for (int j = 0; j < n; ++j)
+            b[i] += A[i * n + j] * x[j];
+    }
+    if (sem_sparse_solve(a, b, b, &err) != SQ_OK) {
+        printf("t201: solve failed: %s\n", err.msg);
+        ++*fails;
+        return 1.0;
+    }
+    double e = 0.0;
+    for (int i = 0; i < n; ++i)
+        e = fmax(e, fabs(b[i] - x[i]) / fmax(1.0, fabs(x[i])));
+    return e;
+}
+
+/* A = (4 + c) I + c' (path couplings) of size 12, assembled from triplets */
+static void path_matrix(double c, double cp, int extra, double *A)
+{
+    memset(A, 0, sizeof(double) * 144);
+    for (int i = 0; i < 12; ++i) {
+        A[i * 12 + i] = 4.0 + c;
+        if (i) A[i * 12 + i - 1] = A[(i - 1) * 12 + i] = cp;
+    }
+    if (extra) A[11 * 12 + 0] = A[0 * 12 + 11] = 0.7;
+}
+
+static int refactor_case(void)
+{
+    int fails = 0;
+    sq_error err = {0};
+    sem_sparse *a = NULL;
+    double A[144];
+    SQ_TEST_OK(sem_sparse_create(12, 4, &a, &err), err);
+    fails +=
+        sq_check_int("t201 reset before factor", "status", sem_sparse_reset(a, &err), SQ_ERR_USAGE);
+    for (int round = 0; round < 3; ++round) {
+        /* round 1: same pattern, other values; round 2: one more entry */
+        path_matrix(round, -1.0 - 0.3 * round, round == 2, A);
+        if (round) SQ_TEST_OK(sem_sparse_reset(a, &err), err);
+        double b[12] = {0};
+        fails += sq_check_int("t201 solve while assembling", "status",
+                              sem_sparse_solve(a, b, b, &err), SQ_ERR_USAGE);
+        for (int i = 0; i < 12; ++i)
+            for (int j = 0; j <= i; ++j)
+                if (A[i * 12 + j] != 0.0)
+                    SQ_TEST_OK(sem_sparse_add(a, i, j, A[i * 12 + j], &err), err);
+        SQ_TEST_OK(sem_sparse_factor(a, &err), err);
+        fails += sq_check_abs("t201 refactor", "max relative error", solve_error(a, 12, A, &fails),
+                              0.0, 1e-12);
+        fails += sq_check_int("t201 add after factor", "status", sem_sparse_add(a, 0, 0, 1.0, &err),
+                              SQ_ERR_USAGE);
+    }
+    sem_sparse_free(&a);
+    return fails;
+}
+
+static int block_case(void)
+{
+    int fails = 0;
+    sq_error err = {0};
+    sem_sparse *a = NULL;
+    enum { NB = 5, BS = 3, NN = NB * BS };
+    /* lower block pattern: column j holds j and its neighbours after it */
+    const long bptr[NB + 1] = {0, 3, 5, 7, 9, 10};
+    const long brow[10] = {0, 1, 4, 1, 2, 2, 3, 3, 4, 4};
+    const long bad_ptr[3] = {0, 1, 2}, bad_row[2] = {1, 1};
+    fails += sq_check_int("t201 malformed block pattern", "status",
+                          sem_sparse_create_blocks(2, 2, bad_ptr, bad_row, &a, &err), SQ_ERR_USAGE);
+    SQ_TEST_OK(sem_sparse_create_blocks(NB, BS, bptr, brow, &a, &err), err);
+    fails += sq_check_int("t201 blocks", "size", sem_sparse_size(a), NN);
+    for (int round = 0; round < 2; ++round) {
+        double A[NN * NN] = {0};
+        const int pairs[6][2] = {{0, 0}, {1, 0}, {0, 4}, {2, 1}, {3, 2}, {4, 3}};
+        if (round) SQ_TEST_OK(sem_sparse_reset(a, &err), err);
+        for (int b = 0; b < NB; ++b) { /* symmetric diagonal blocks, dominant */
+            double M[BS * BS];
+            for (int r = 0; r < BS; ++r)
+                for (int c = 0; c < BS; ++c)
+                    M[r * BS + c] = r == c ? 10.0 + b + round : 0.5 / (1 + r + c) + 0.1 * round;
+            SQ_TEST_OK(sem_sparse_add_block(a, b, b, M, &err), err);
+            for (int r = 0; r < BS; ++r)
+                for (int c = 0; c < BS; ++c)
+                    A[(b * BS + r) * NN + b * BS + c] += M[r * BS + c];
+        }
+        for (int k = 1; k < 6; ++k) { /* (0,4) given above the diagonal: stored transposed */
+            const int bi = pairs[k][0], bj = pairs[k][1];
+            double M[BS * BS];
+            for (int r = 0; r < BS; ++r)
+                for (int c = 0; c < BS; ++c)
+                    M[r * BS + c] = 0.3 * sin(1.0 + k + 2 * r + 3.0 * c + round);
+            SQ_TEST_OK(sem_sparse_add_block(a, bi, bj, M, &err), err);
+            for (int r = 0; r < BS; ++r)
+                for (int c = 0; c < BS; ++c) {
+                    A[(bi * BS + r) * NN + bj * BS + c] += M[r * BS + c];
+                    A[(bj * BS + c) * NN + bi * BS + r] += M[r * BS + c];
+                }
+        }
+        /* single entries, summed into the blocks */
+        SQ_TEST_OK(sem_sparse_add(a, 14, 1, 0.25, &err), err);
+        A[14 * NN + 1] += 0.25;
+        A[1 * NN + 14] += 0.25;
+        SQ_TEST_OK(sem_sparse_add(a, 7, 7, 1.5, &err), err);
+        A[7 * NN + 7] += 1.5;
+        fails += sq_check_int("t201 entry outside the blocks", "status",
+                              sem_sparse_add(a, 9, 0, 1.0, &err), SQ_ERR_USAGE);
+        double M[BS * BS] = {0};
+        fails += sq_check_int("t201 block outside the pattern", "status",
+                              sem_sparse_add_block(a, 3, 0, M, &err), SQ_ERR_USAGE);
+        SQ_TEST_OK(sem_sparse_factor(a, &err), err);
+        fails += sq_check_abs(round ? "t201 blocks after reset" : "t201 blocks",
+                              "max relative error", solve_error(a, NN, A, &fails), 0.0, 1e-12);
+    }
+    sem_sparse_free(&a);
+    return fails;
+}
 
 int main(void)
 {
@@ -24,7 +154,8 @@ int main(void)
         A[i][i] = 7.0;
         if (i > 0) A[i][i - 1] = A[i - 1][i] = -1.0;
     }
-    for (int k = 10; k < N; k += 10) A[0][k] = A[k][0] = 0.5;
+    for (int k = 10; k < N; k += 10)
+        A[0][k] = A[k][0] = 0.5;
     for (int i = 0; i < N; ++i)
         for (int j = 0; j < N; ++j) {
             if (A[i][j] == 0.0) continue;
@@ -40,14 +171,17 @@ int main(void)
     SQ_TEST_OK(sem_sparse_factor(a, &err), err);
     for (int rhs = 0; rhs < 2; ++rhs) {
         double x[N], b[N];
-        for (int i = 0; i < N; ++i) x[i] = rhs ? cos(0.3 * i) : 1.0 + 0.01 * i * i;
+        for (int i = 0; i < N; ++i)
+            x[i] = rhs ? cos(0.3 * i) : 1.0 + 0.01 * i * i;
         for (int i = 0; i < N; ++i) {
             b[i] = 0.0;
-            for (int j = 0; j < N; ++j) b[i] += A[i][j] * x[j];
+            for (int j = 0; j < N; ++j)
+                b[i] += A[i][j] * x[j];
         }
         SQ_TEST_OK(sem_sparse_solve(a, b, b, &err), err); /* aliased */
         double e = 0.0;
-        for (int i = 0; i < N; ++i) e = fmax(e, fabs(b[i] - x[i]) / fmax(1.0, fabs(x[i])));
+        for (int i = 0; i < N; ++i)
+            e = fmax(e, fabs(b[i] - x[i]) / fmax(1.0, fabs(x[i])));
         fails += sq_check_abs("t201 SPD solve", "max relative error", e, 0.0, 1e-12);
     }
     sem_sparse_free(&a);
@@ -66,5 +200,8 @@ int main(void)
     fails += sq_check_int("t201 solve unfactored", "status", sem_sparse_solve(a, b2, b2, &err),
                           SQ_ERR_USAGE);
     sem_sparse_free(&a);
+
+    fails += refactor_case();
+    fails += block_case();
     return fails ? 1 : 0;
 }

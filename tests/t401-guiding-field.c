@@ -29,7 +29,8 @@ static int run(const char *file, sq_field_analysis *a, int order)
 static int count_valence(const sq_field_analysis *a, int v)
 {
     int n = 0;
-    for (int k = 0; k < a->npoints; k++) n += a->points[k].valence == v;
+    for (int k = 0; k < a->npoints; k++)
+        n += a->points[k].valence == v;
     return n;
 }
 
@@ -60,11 +61,12 @@ static int common(const char *file, const sq_field_analysis *a, int npts, int va
 {
     int fails = 0;
     fails += sq_check_int(file, "singular points", a->npoints, npts);
-    fails += sq_check_int(file, "singular points of the expected valence", count_valence(a, valence),
-                          npts);
+    fails += sq_check_int(file, "singular points of the expected valence",
+                          count_valence(a, valence), npts);
     fails += sq_check_int(file, "Poincare-Hopf lhs = 4 chi", a->ph_lhs, a->ph_rhs);
     fails += sq_check_str(file, "method", a->field.method == SEM_CG ? "cg" : "dg", method);
-    for (int k = 0; k < a->npoints; k++) fails += sq_check_int(file, "near boundary", a->points[k].near_boundary, 0);
+    for (int k = 0; k < a->npoints; k++)
+        fails += sq_check_int(file, "near boundary", a->points[k].near_boundary, 0);
     return fails;
 }
 
@@ -76,13 +78,15 @@ int main(void)
 
     run("half_disc.step", &a, 8);
     fails += common("half_disc", &a, 2, 3, "cg");
-    fails += sq_check_abs("half_disc", "mirror symmetry about x = 0", mirror_error(&a, 0.0), 0.0, 1e-6);
+    fails +=
+        sq_check_abs("half_disc", "mirror symmetry about x = 0", mirror_error(&a, 0.0), 0.0, 1e-6);
     fails += sq_check_int("half_disc", "corner (1,0)", corner_valence_at(&a, 1, 0), 1);
     sq_field_analysis_free(&a);
 
     run("quarter_circle.step", &a, 8);
     fails += common("quarter_circle", &a, 1, 3, "cg");
-    if (a.npoints == 1) fails += sq_check_abs("quarter_circle", "y - x", a.points[0].y - a.points[0].x, 0.0, 1e-6);
+    if (a.npoints == 1)
+        fails += sq_check_abs("quarter_circle", "y - x", a.points[0].y - a.points[0].x, 0.0, 1e-6);
     sq_field_analysis_free(&a);
 
     run("triangle.step", &a, 8);
@@ -107,7 +111,8 @@ int main(void)
 
     run("two_holes.step", &a, 8);
     fails += common("two_holes", &a, 2, 5, "cg");
-    fails += sq_check_abs("two_holes", "mirror symmetry about x = 2", mirror_error(&a, 2.0), 0.0, 1e-5);
+    fails +=
+        sq_check_abs("two_holes", "mirror symmetry about x = 2", mirror_error(&a, 2.0), 0.0, 1e-5);
     sq_field_analysis_free(&a);
 
     run("nautilus.step", &a, 8);
@@ -143,5 +148,30 @@ int main(void)
     fails += sq_check_abs("naca0012", "mirror symmetry about y = 0 (sum of y)",
                           a.npoints == 2 ? a.points[0].y + a.points[1].y : 1.0, 0.0, 1e-4);
     sq_field_analysis_free(&a);
+
+    /* Order 4, the mesh command's default: the same singular points on
+     * every example.  The triangle's centre is a vertex of its (symmetric)
+     * triangulation, where each DG polynomial around it has its root just
+     * across an edge: found by the critical-point search's edge rule. */
+    static const struct {
+        const char *file, *method;
+        int npts, valence;
+    } p4[] = {
+        {"half_disc", "cg", 2, 3}, {"quarter_circle", "cg", 1, 3}, {"triangle", "dg", 1, 3},
+        {"square", "cg", 0, 3},    {"square_hole", "cg", 4, 5},    {"two_holes", "cg", 2, 5},
+        {"nautilus", "cg", 4, 3},  {"annulus", "cg", 0, 3},        {"lshape", "cg", 0, 3},
+        {"polygon", "dg", 0, 3},   {"naca0012", "dg", 2, 5},       {"obtuse_quad", "dg", 1, 3}};
+    for (size_t k = 0; k < sizeof p4 / sizeof *p4; ++k) {
+        char file[64], name[80];
+        snprintf(file, sizeof file, "%s.step", p4[k].file);
+        snprintf(name, sizeof name, "%s P=4", p4[k].file);
+        run(file, &a, 4);
+        fails += common(name, &a, p4[k].npts, p4[k].valence, p4[k].method);
+        if (!strcmp(p4[k].file, "triangle") && a.npoints == 1) {
+            fails += sq_check_abs(name, "x", a.points[0].x, 0.5, 1e-5);
+            fails += sq_check_abs(name, "y", a.points[0].y, sqrt(3.0) / 6, 1e-5);
+        }
+        sq_field_analysis_free(&a);
+    }
     return fails ? 1 : 0;
 }
