@@ -9,6 +9,9 @@
 
 #define MAX_NEWTON 60
 #define MAX_HALVINGS 30
+#define MAX_DOUBLINGS 4
+#define CONVERGED 1e-9
+#define STALE_MOVE 1e-3
 #define WORST_ETA 0.55
 #define WORST_SWEEPS 50
 #define MIN_TAPER 0.3
@@ -17,14 +20,16 @@
 
 /* How each vertex moves. */
 typedef struct {
-    int *dof;    /* nv: first unknown, -1 when fixed */
-    int *edge;   /* nv: CAD edge a sliding vertex moves on, else -1 */
-    double *s;   /* nv: arc length of a sliding vertex */
-    double *len; /* nv: length of that edge, negative when the edge is open */
-    double *tan; /* 2*nv: unit tangent of a sliding vertex */
+    int *dof;     /* nv: its two unknowns 2b, 2b + 1 (b its block), -1 when fixed */
+    int *edge;    /* nv: CAD edge a sliding vertex moves on, else -1 */
+    double *s;    /* nv: arc length of a sliding vertex */
+    double *len;  /* nv: length of that edge, negative when the edge is open */
+    double *tan;  /* 2*nv: unit tangent of a sliding vertex */
     int ndof;
     int *start; /* nv+1: CSR of the quads around each vertex */
     int *around;
+    long *bptr, *brow; /* the Hessian's block pattern (sparse.h): moving
+                        * vertices that share a quad */
 } relax_work;
 
 static void work_free(relax_work *w)
@@ -36,6 +41,43 @@ static void work_free(relax_work *w)
     free(w->tan);
     free(w->start);
     free(w->around);
+    free(w->bptr);
+    free(w->brow);
+}
+
+static int cmp_long(const void *a, const void *b)
+{
+    long x = *(const long *)a, y = *(const long *)b;
+    return (x > y) - (x < y);
+}
+
+/* The lower triangle of the Hessian's 2 x 2 block pattern: block column b
+ * (moving vertex i) holds the blocks of the moving vertices >= i that share
+ * a quad with i, the diagonal first. */
+static sq_status block_pattern(const sq_relax_mesh *m, relax_work *w, sq_error *err)
+{
+    long nb = w->ndof / 2;
+    w->bptr = malloc(sizeof(long) * ((size_t)nb + 1));
+    w->brow = malloc(sizeof(long) * (16 * (size_t)m->nq + 1));
+    if (!w->bptr || !w->brow) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    long k = 0;
+    w->bptr[0] = 0;
+    for (int i = 0; i < m->nv; i++) {
+        if (w->dof[i] < 0) continue;
+        long b = w->dof[i] / 2, first = k;
+        for (int t = w->start[i]; t < w->start[i + 1]; t++)
+            for (int c = 0; c < 4; c++) {
+                int v = m->quad[4 * w->around[t] + c];
+                if (w->dof[v] >= 2 * b) w->brow[k++] = w->dof[v] / 2;
+            }
+        qsort(&w->brow[first], (size_t)(k - first), sizeof(long), cmp_long);
+        long u = first;
+        for (long p = first; p < k; p++)
+            if (p == first || w->brow[p] != w->brow[u - 1]) w->brow[u++] = w->brow[p];
+        k = u;
+        w->bptr[b + 1] = k;
+    }
+    return SQ_OK;
 }
 
 /* Which vertices move and how: interior free vertices in the plane (two
@@ -96,8 +138,10 @@ static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_wor
             w->edge[i] = -1;
             continue;
         }
+        /* two unknowns also for a sliding vertex (the second one pinned
+         * at zero): the Hessian is then made of 2 x 2 blocks */
         w->dof[i] = w->ndof;
-        w->ndof += nb[i] == 0 ? 2 : 1;
+        w->ndof += 2;
         if (nb[i] == 0) continue;
         double a[2], b[2], L = cad_face_edge_length(face, w->edge[i]);
         st = cad_face_edge_project(face, w->edge[i], &m->xy[2 * i], &w->s[i], NULL, NULL, err);
@@ -107,6 +151,7 @@ static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_wor
     }
     free(held);
     free(nb);
+    if (st == SQ_OK) st = block_pattern(m, w, err);
     return st;
 }
 
@@ -212,16 +257,16 @@ static void corner_derivatives(const double e[4], double g[4], double H[16])
             H[4 * i + j] = 8.0 * a / s2 * (PM[4 * i + j] - wh[i] * wh[j]) + lp * z[i] * z[j];
 }
 
-/* d e / d z_p for vertex p in role r (0: c, 1: a, 2: b): a 4 x n matrix. */
+/* d e / d z_p for vertex p in role r (0: c, 1: a, 2: b): a 4 x 2 matrix,
+ * its second column zero for a sliding vertex; 0 when p is fixed. */
 static int vertex_jacobian(const relax_work *w, int p, int role, double J[4][2])
 {
     if (w->dof[p] < 0) return 0;
     double T[2][2] = {{1.0, 0.0}, {0.0, 1.0}};
-    int n = 2;
     if (w->edge[p] >= 0) {
         T[0][0] = w->tan[2 * p];
         T[1][0] = w->tan[2 * p + 1];
-        n = 1;
+        T[1][1] = 0.0;
     }
     /* e1 = a - c, e2 = b - c */
     double s1 = role == 0   ? -1.0
@@ -230,25 +275,29 @@ static int vertex_jacobian(const relax_work *w, int p, int role, double J[4][2])
            s2 = role == 0   ? -1.0
                 : role == 2 ? 1.0
                             : 0.0;
-    for (int j = 0; j < n; j++) {
+    for (int j = 0; j < 2; j++) {
         J[0][j] = s1 * T[0][j];
         J[1][j] = s1 * T[1][j];
         J[2][j] = s2 * T[0][j];
         J[3][j] = s2 * T[1][j];
     }
-    return n;
+    return 1;
 }
 
 /* The Newton direction d: (H + shift) d = -g, H the sum of the corners'
- * projected Hessians. */
-static sq_status newton_direction(const sq_relax_mesh *m, const relax_work *w, double *d,
-                                  sq_error *err)
+ * projected Hessians, assembled in place in *A (created on the first call,
+ * its symbolic analysis kept for the next ones) when fresh, else the last
+ * factorization of H; *gd = g . d. */
+static sq_status newton_direction(const sq_relax_mesh *m, const relax_work *w, int fresh,
+                                  sem_sparse **A, double *d, double *gd, sq_error *err)
 {
     double *g = calloc((size_t)w->ndof + 1, sizeof(double)),
+           *gx = calloc(2 * (size_t)m->nv + 1, sizeof(double)),
            *diag = calloc((size_t)w->ndof + 1, sizeof(double));
-    sem_sparse *A = NULL;
-    sq_status st = g && diag ? sem_sparse_create(w->ndof, 36L * 4 * m->nq, &A, err)
-                             : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    sq_status st = !g || !gx || !diag ? SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory")
+                   : !fresh           ? SQ_OK
+                   : *A               ? sem_sparse_reset(*A, err)
+                                      : sem_sparse_create_blocks(w->ndof / 2, 2, w->bptr, w->brow, A, err);
     for (int q = 0; q < m->nq && st == SQ_OK; q++)
         for (int k = 0; k < 4 && st == SQ_OK; k++) {
             int v[3];
@@ -256,38 +305,64 @@ static sq_status newton_direction(const sq_relax_mesh *m, const relax_work *w, d
             const double *c = &m->xy[2 * v[0]], *a = &m->xy[2 * v[1]], *b = &m->xy[2 * v[2]];
             double e[4] = {a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1]}, ge[4], He[16];
             corner_derivatives(e, ge, He);
+            /* the gradient in the plane, per vertex (a sliding vertex's
+             * component along its tangent below) */
+            gx[2 * v[0]] -= ge[0] + ge[2];
+            gx[2 * v[0] + 1] -= ge[1] + ge[3];
+            gx[2 * v[1]] += ge[0];
+            gx[2 * v[1] + 1] += ge[1];
+            gx[2 * v[2]] += ge[2];
+            gx[2 * v[2] + 1] += ge[3];
             double J[3][4][2];
-            int n[3];
+            int moves[3];
             for (int r = 0; r < 3; r++)
-                n[r] = vertex_jacobian(w, v[r], r, J[r]);
-            for (int r = 0; r < 3; r++)
-                for (int i = 0; i < n[r]; i++) {
-                    int row = w->dof[v[r]] + i;
+                moves[r] = vertex_jacobian(w, v[r], r, J[r]);
+            for (int r = 0; r < 3 && fresh; r++)
+                for (int t = r; t < 3 && st == SQ_OK; t++) {
+                    if (!moves[r] || !moves[t]) continue;
+                    double K[4], HJ[4][2];
                     for (int x = 0; x < 4; x++)
-                        g[row] += J[r][x][i] * ge[x];
-                    for (int t = 0; t < 3 && st == SQ_OK; t++)
-                        for (int j = 0; j < n[t] && st == SQ_OK; j++) {
-                            int col = w->dof[v[t]] + j;
-                            if (row < col) continue; /* the lower triangle */
-                            double h = 0.0;
-                            for (int x = 0; x < 4; x++)
-                                for (int y = 0; y < 4; y++)
-                                    h += J[r][x][i] * He[4 * x + y] * J[t][y][j];
-                            if (row == col) diag[row] += h;
-                            st = sem_sparse_add(A, row, col, h, err);
-                        }
+                        for (int j = 0; j < 2; j++)
+                            HJ[x][j] = He[4 * x] * J[t][0][j] + He[4 * x + 1] * J[t][1][j] +
+                                       He[4 * x + 2] * J[t][2][j] + He[4 * x + 3] * J[t][3][j];
+                    for (int i = 0; i < 2; i++)
+                        for (int j = 0; j < 2; j++)
+                            K[2 * i + j] = J[r][0][i] * HJ[0][j] + J[r][1][i] * HJ[1][j] +
+                                           J[r][2][i] * HJ[2][j] + J[r][3][i] * HJ[3][j];
+                    if (r == t) {
+                        diag[w->dof[v[r]]] += K[0];
+                        diag[w->dof[v[r]] + 1] += K[3];
+                    }
+                    st = sem_sparse_add_block(*A, w->dof[v[r]] / 2, w->dof[v[t]] / 2, K, err);
                 }
         }
+    for (int i = 0; i < m->nv && st == SQ_OK; i++) {
+        int k = w->dof[i];
+        if (k < 0) continue;
+        const double *t = &w->tan[2 * i], *gi = &gx[2 * i];
+        if (w->edge[i] < 0) {
+            g[k] = gi[0];
+            g[k + 1] = gi[1];
+            continue;
+        }
+        g[k] = t[0] * gi[0] + t[1] * gi[1];
+        /* the pinned second unknown: a unit diagonal, no coupling, no
+         * right-hand side */
+        if (fresh) st = sem_sparse_add(*A, k + 1, k + 1, 1.0, err);
+    }
     /* a small shift keeps the system definite where a projected Hessian
      * lost rank */
-    for (int i = 0; i < w->ndof && st == SQ_OK; i++)
-        st = sem_sparse_add(A, i, i, 1e-8 * diag[i] + 1e-300, err);
-    if (st == SQ_OK) st = sem_sparse_factor(A, err);
+    for (int i = 0; i < w->ndof && st == SQ_OK && fresh; i++)
+        st = sem_sparse_add(*A, i, i, 1e-8 * diag[i] + 1e-300, err);
+    if (st == SQ_OK && fresh) st = sem_sparse_factor(*A, err);
     for (int i = 0; i < w->ndof; i++)
         g[i] = -g[i];
-    if (st == SQ_OK) st = sem_sparse_solve(A, g, d, err);
-    sem_sparse_free(&A);
+    if (st == SQ_OK) st = sem_sparse_solve(*A, g, d, err);
+    *gd = 0.0;
+    for (int i = 0; i < w->ndof; i++)
+        *gd -= g[i] * d[i];
     free(g);
+    free(gx);
     free(diag);
     return st;
 }
@@ -425,6 +500,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
     relax_work w = {0};
     sq_status st = prepare(face, m, &w, err);
     double *d = NULL, *p = NULL, *s0 = NULL;
+    sem_sparse *A = NULL;
     if (st == SQ_OK) {
         d = malloc(sizeof(double) * ((size_t)w.ndof + 1));
         p = malloc(sizeof(double) * 2 * ((size_t)m->nv + 1));
@@ -440,11 +516,13 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
             hi[c] = fmax(hi[c], m->xy[2 * i + c]);
         }
     const double extent = hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    int fresh = 1;
     for (int it = 0; it < MAX_NEWTON && st == SQ_OK && w.ndof > 0 && E < HUGE_VAL; it++) {
         for (int i = 0; i < m->nv && st == SQ_OK; i++)
             if (w.dof[i] >= 0 && w.edge[i] >= 0)
                 st = on_edge(face, &w, i, &w.s[i], &m->xy[2 * i], &w.tan[2 * i], err);
-        if (st == SQ_OK) st = newton_direction(m, &w, d, err);
+        double gd = 0.0;
+        if (st == SQ_OK) st = newton_direction(m, &w, fresh, &A, d, &gd, err);
         if (st != SQ_OK) break;
         memcpy(p, m->xy, sizeof(double) * 2 * (size_t)m->nv);
         memcpy(s0, w.s, sizeof(double) * (size_t)m->nv);
@@ -454,24 +532,55 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
             st = place(face, m, &w, p, s0, d, t, err);
             if (st == SQ_OK && (E1 = energy(m)) < E) break;
         }
-        if (st != SQ_OK || h == MAX_HALVINGS) { /* no decrease left: converged */
+        /* no decrease left: converged, or a stale direction, retried fresh */
+        if (st != SQ_OK || h == MAX_HALVINGS) {
             memcpy(m->xy, p, sizeof(double) * 2 * (size_t)m->nv);
             memcpy(w.s, s0, sizeof(double) * (size_t)m->nv);
+            if (st == SQ_OK && !fresh) {
+                fresh = 1;
+                continue;
+            }
             break;
         }
-        /* converged: the step moved no vertex by more than 1e-6 of the
-         * mesh's extent (with the projected Hessians the last steps shrink
-         * linearly, by about 0.1-0.3 each) */
+        double rho = h == 0 ? (E - E1) / (-0.5 * gd) : 0.0;
+        /* a full step that decreased the energy by much more than its
+         * quadratic model predicted was too short (the projected Hessian
+         * overestimates the curvature where it clamped negative eigenvalues:
+         * steps shrinking by only about 0.8 each): doubled while the energy
+         * keeps decreasing */
+        if (h == 0 && rho > 1.5) {
+            double tx = 1.0;
+            for (int x = 0; x < MAX_DOUBLINGS && st == SQ_OK; x++, tx *= 2.0) {
+                st = place(face, m, &w, p, s0, d, 2.0 * tx, err);
+                double E2 = st == SQ_OK ? energy(m) : HUGE_VAL;
+                if (!(E2 < E1)) break;
+                E1 = E2;
+            }
+            if (st == SQ_OK) st = place(face, m, &w, p, s0, d, tx, err);
+        }
         double moved = 0.0;
         for (int i = 0; i < m->nv; i++)
             moved =
                 fmax(moved, fabs(m->xy[2 * i] - p[2 * i]) + fabs(m->xy[2 * i + 1] - p[2 * i + 1]));
-        int done = moved < 1e-6 * extent || E - E1 < 1e-15 * E;
+        /* a stale step that decreased the energy about as its model
+         * predicted */
+        int good = h == 0 && rho > 0.5 && rho < 1.5;
+        /* converged: a fresh or good step moved no vertex by more than
+         * CONVERGED of the mesh's extent.  Tight, as the compass search
+         * after this decides on small differences of its quality measure:
+         * stopped at 1e-6 of the extent, two paths to the same optimum
+         * ended in compass results 4e-4 apart in mean eta (triangle.step) */
+        int done = moved < CONVERGED * extent || E - E1 < 1e-15 * E;
         E = E1;
-        if (done) break;
+        if (done && (fresh || good)) break;
+        /* the Hessian factored afresh for every step until they become
+         * small (the last, linearly converging ones: by about 0.3 each),
+         * then the last factorization reused as long as its steps are good */
+        fresh = fresh ? !(h == 0 && moved < STALE_MOVE * extent) : !good;
     }
     for (int phase = 0; phase < 2 && st == SQ_OK; phase++)
         st = compass(face, m, &w, phase, err);
+    sem_sparse_free(&A);
     free(d);
     free(p);
     free(s0);
