@@ -549,9 +549,11 @@ static sq_status smooth(const cad_face *face, const sq_face_info *info, vmesh *v
 
 /* Design 3b: the whole vertex mesh relaxed towards an orthogonal map
  * (quad_relax.h); what stays: singular points (interior vertices of valence
- * other than 4), the face's corners and the boundary layers. */
+ * other than 4), the face's corners and the boundary layers.  With the
+ * singular points free the relaxation gives up once it folds a curved
+ * boundary quad (*folded): the attempt with them held follows. */
 static sq_status relax(const cad_face *face, const sq_face_info *info, vmesh *v, const int *keep,
-                       int move_singular, sq_error *err)
+                       int move_singular, int *folded, sq_error *err)
 {
     int *deg = calloc((size_t)v->nv + 1, sizeof(int)), *bnd = calloc((size_t)v->nv + 1, sizeof(int));
     int *fixed = calloc((size_t)v->nv + 1, sizeof(int));
@@ -570,8 +572,9 @@ static sq_status relax(const cad_face *face, const sq_face_info *info, vmesh *v,
     for (int i = 0; i < v->nv; i++)
         fixed[i] = (keep && keep[i]) || (!bnd[i] && deg[i] != 4 && !move_singular) ||
                    (bnd[i] && at_face_corner(info, &v->xy[2 * i]));
-    sq_relax_mesh rm = {v->nv, v->nq, v->xy, v->quad, v->side_tag, fixed};
+    sq_relax_mesh rm = {v->nv, v->nq, v->xy, v->quad, v->side_tag, fixed, move_singular, 0};
     sq_status st = sq_quad_relax(face, &rm, err);
+    *folded = rm.folded;
     free(deg);
     free(bnd);
     free(fixed);
@@ -1008,7 +1011,9 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
     for (int attempt = 0; attempt < 3 && st == SQ_OK; attempt++) {
         sq_quad_mesh *m = NULL;
         memcpy(v.xy, smoothed, sizeof(double) * 2 * (size_t)v.nv);
-        if (attempt < 2) st = relax(face, info, &v, keep, attempt == 0, err);
+        int folded = 0;
+        if (attempt < 2) st = relax(face, info, &v, keep, attempt == 0, &folded, err);
+        if (folded) continue;
         if (st == SQ_OK && opt->nbl > 0) st = bl_march(face, opt, &v, err);
         if (st == SQ_OK) st = raise_order(face, &v, Q, opt->nodes, opt, &m, err);
         sq_quad_quality qq;

@@ -495,17 +495,63 @@ static sq_status compass(const cad_face *face, const sq_relax_mesh *m, relax_wor
     return st;
 }
 
+/* Arc length of boundary vertex v on CAD edge t: its own if it slides
+ * there, else the projection (a held vertex, projected once: *held < 0). */
+static sq_status arc_length(const cad_face *face, const relax_work *w, int v, int t, const double xy[2],
+                            double *held, double *s, sq_error *err)
+{
+    if (w->edge[v] == t) {
+        *s = w->s[v];
+        return SQ_OK;
+    }
+    if (*held < 0.0) SQ_TRY(cad_face_edge_project(face, t, xy, held, NULL, NULL, err));
+    *s = *held;
+    return SQ_OK;
+}
+
+/* Does the curve under a boundary side cross the line of its quad's
+ * opposite side: its point halfway (in arc length) between the side's ends
+ * to the right of the opposite side, the curved quad folded whatever its
+ * interior nodes.  held: 2 per quad side, the arc lengths of held ends. */
+static sq_status boundary_folded(const cad_face *face, const sq_relax_mesh *m, const relax_work *w,
+                                 double *held, int *folded, sq_error *err)
+{
+    *folded = 0;
+    for (int q = 0; q < m->nq && !*folded; q++)
+        for (int k = 0; k < 4 && !*folded; k++) {
+            int t = m->side_tag[4 * q + k];
+            if (t < 0) continue;
+            const int *c = &m->quad[4 * q];
+            double sa, sb, L = cad_face_edge_length(face, t), x[2];
+            double *h = &held[2 * (4 * q + k)];
+            SQ_TRY(arc_length(face, w, c[k], t, &m->xy[2 * c[k]], &h[0], &sa, err));
+            SQ_TRY(arc_length(face, w, c[(k + 1) % 4], t, &m->xy[2 * c[(k + 1) % 4]], &h[1], &sb,
+                              err));
+            double mid = 0.5 * (sa + sb);
+            /* on a closed edge, the side may span its closing point */
+            if (fabs(sb - sa) > 0.5 * L) mid += mid < 0.5 * L ? 0.5 * L : -0.5 * L;
+            SQ_TRY(cad_face_edge_eval(face, t, mid, x, NULL, NULL, err));
+            const double *p = &m->xy[2 * c[(k + 2) % 4]], *r = &m->xy[2 * c[(k + 3) % 4]];
+            *folded = (r[0] - p[0]) * (x[1] - p[1]) - (r[1] - p[1]) * (x[0] - p[0]) < 0.0;
+        }
+    return SQ_OK;
+}
+
 sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
 {
     relax_work w = {0};
     sq_status st = prepare(face, m, &w, err);
-    double *d = NULL, *p = NULL, *s0 = NULL;
+    double *d = NULL, *p = NULL, *s0 = NULL, *held = NULL;
     sem_sparse *A = NULL;
+    m->folded = 0;
     if (st == SQ_OK) {
         d = malloc(sizeof(double) * ((size_t)w.ndof + 1));
         p = malloc(sizeof(double) * 2 * ((size_t)m->nv + 1));
         s0 = malloc(sizeof(double) * ((size_t)m->nv + 1));
-        if (!d || !p || !s0) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        held = malloc(sizeof(double) * 8 * ((size_t)m->nq + 1));
+        if (!d || !p || !s0 || !held) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        for (long i = 0; held && i < 8L * m->nq; i++)
+            held[i] = -1.0;
     }
     /* a mesh with a non-convex corner is left to the caller's untangling */
     double E = st == SQ_OK ? energy(m) : HUGE_VAL, lo[2] = {HUGE_VAL, HUGE_VAL},
@@ -572,15 +618,19 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
          * ended in compass results 4e-4 apart in mean eta (triangle.step) */
         int done = moved < CONVERGED * extent || E - E1 < 1e-15 * E;
         E = E1;
-        if (done && (fresh || good)) break;
+        /* a fold that the relaxation made is not undone by its later steps
+         * (naca0012 with its singular points free: from the 6th step on) */
+        if (m->stop_on_fold && st == SQ_OK) st = boundary_folded(face, m, &w, held, &m->folded, err);
+        if (m->folded || (done && (fresh || good))) break;
         /* the Hessian factored afresh for every step until they become
          * small (the last, linearly converging ones: by about 0.3 each),
          * then the last factorization reused as long as its steps are good */
         fresh = fresh ? !(h == 0 && moved < STALE_MOVE * extent) : !good;
     }
-    for (int phase = 0; phase < 2 && st == SQ_OK; phase++)
+    for (int phase = 0; phase < 2 && st == SQ_OK && !m->folded; phase++)
         st = compass(face, m, &w, phase, err);
     sem_sparse_free(&A);
+    free(held);
     free(d);
     free(p);
     free(s0);

@@ -30,6 +30,11 @@ typedef struct {
     const int *quad;     /* 4*nq corner vertices, counter-clockwise */
     const int *side_tag; /* 4*nq: CAD edge under side k (vertex k to k+1), or -1 */
     const int *fixed;    /* nv: 1 = does not move */
+    /* give up as soon as the curve under a boundary side crosses the line
+     * of its quad's opposite side (the curved quad folds): folded = 1 and
+     * xy where the relaxation stopped */
+    int stop_on_fold;
+    int folded;
 } sq_relax_mesh;
 
 sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err);
