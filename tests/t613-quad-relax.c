@@ -2,9 +2,9 @@
  * unit square, a 6 x 4 grid whose interior vertices are shaken and whose
  * boundary vertices are moved along their edges relaxes back to the uniform
  * grid — the energy's minimizer there (conformal map of the square onto
- * itself followed by the stretch to 6 x 4 cells) — to 1e-6 (where the
- * relaxation stops: its steps are below 1e-6 of the extent), with the
- * boundary vertices still on their edges. */
+ * itself followed by the stretch to 6 x 4 cells) — to 1e-8 (where the
+ * relaxation stops: its steps are below 1e-9 of the extent), with the
+ * boundary vertices still on their edges.  And stop_on_fold (ring below). */
 #include "cad.h"
 #include "quad_relax.h"
 #include "test_util.h"
@@ -12,6 +12,47 @@
 #define NU 6
 #define NV 4
 #define ID(i, j) ((j) * (NU + 1) + (i))
+
+/* stop_on_fold on square_hole (hole r = 0.25 at (0.5, 0.5)): a ring of four
+ * quads around the hole, its inner vertices sliding on the circle (shaken
+ * off the quarter points), its outer ones held at radius r.  Each inner side
+ * spans about a quarter of the circle, whose midpoint (radius 0.25) lies
+ * beyond the opposite side's line (at 0.707 r from the centre) when
+ * r = 0.3: folded after the first step, and with r = 0.5 never.  Returns the
+ * failures. */
+static int ring(const cad_face *f, double r, int want)
+{
+    double xy[16];
+    int quad[16], tag[16], fixed[8], hole = -1, fails = 0;
+    sq_error err;
+    static const double shake[4] = {0.09, -0.05, 0.07, -0.03};
+    for (int k = 0; k < 4; k++) {
+        double a = 0.5 * M_PI * k + shake[k], b = 0.5 * M_PI * k;
+        xy[2 * k] = 0.5 + 0.25 * cos(a), xy[2 * k + 1] = 0.5 + 0.25 * sin(a);
+        xy[8 + 2 * k] = 0.5 + r * cos(b), xy[8 + 2 * k + 1] = 0.5 + r * sin(b);
+        fixed[k] = 0;
+        fixed[4 + k] = 1;
+    }
+    for (int e = 0; e < cad_face_num_edges(f); e++) {
+        double d;
+        SQ_TEST_OK(cad_face_edge_project(f, e, (double[2]){0.75, 0.5}, NULL, NULL, &d, &err), err);
+        if (d < 1e-9) hole = e;
+    }
+    fails += sq_check_int("t613 ring", "hole edge found", hole >= 0, 1);
+    for (int k = 0; k < 4; k++) {
+        /* counter-clockwise: inner k, outer k, outer k+1, inner k+1; the
+         * last side on the hole */
+        int c[4] = {k, 4 + k, 4 + (k + 1) % 4, (k + 1) % 4};
+        for (int j = 0; j < 4; j++) {
+            quad[4 * k + j] = c[j];
+            tag[4 * k + j] = j == 3 ? hole : -1;
+        }
+    }
+    sq_relax_mesh m = {8, 4, xy, quad, tag, fixed, 1, 0};
+    SQ_TEST_OK(sq_quad_relax(f, &m, &err), err);
+    fails += sq_check_int("t613 ring", "folded", m.folded, want);
+    return fails;
+}
 
 int main(void)
 {
@@ -64,7 +105,14 @@ int main(void)
         for (int i = 0; i <= NU; i++)
             worst = fmax(worst, hypot(xy[2 * ID(i, j)] - (double)i / NU,
                                       xy[2 * ID(i, j) + 1] - (double)j / NV));
-    fails += sq_check_abs("t613", "largest distance to the uniform grid", worst, 0.0, 1e-6);
+    fails += sq_check_abs("t613", "largest distance to the uniform grid", worst, 0.0, 1e-8);
+    cad_face_free(&f);
+    cad_model_free(&model);
+    sq_test_path(path, sizeof path, 0, "square_hole.step");
+    SQ_TEST_OK(cad_model_read(path, &model, &err), err);
+    SQ_TEST_OK(cad_face_create(model, 0, &f, &err), err);
+    fails += ring(f, 0.3, 1);
+    fails += ring(f, 0.5, 0);
     cad_face_free(&f);
     cad_model_free(&model);
     return fails != 0;
