@@ -512,15 +512,19 @@ static sq_status arc_length(const cad_face *face, const relax_work *w, int v, in
 /* Does the curve under a boundary side cross the line of its quad's
  * opposite side: its point halfway (in arc length) between the side's ends
  * to the right of the opposite side, the curved quad folded whatever its
- * interior nodes.  held: 2 per quad side, the arc lengths of held ends. */
-static sq_status boundary_folded(const cad_face *face, const sq_relax_mesh *m, const relax_work *w,
-                                 double *held, int *folded, sq_error *err)
+ * interior nodes.  held: 2 per quad side, the arc lengths of held ends;
+ * was: 1 per quad side, its state at the start, filled when init.  *grown:
+ * a side folded that was not at the start (one that was, such as a thin
+ * boundary-layer cell on a curved wall that the caller rebuilds after the
+ * relaxation, is not the relaxation's doing). */
+static sq_status boundary_folds(const cad_face *face, const sq_relax_mesh *m, const relax_work *w,
+                                double *held, char *was, int init, int *grown, sq_error *err)
 {
-    *folded = 0;
-    for (int q = 0; q < m->nq && !*folded; q++)
-        for (int k = 0; k < 4 && !*folded; k++) {
+    *grown = 0;
+    for (int q = 0; q < m->nq && !*grown; q++)
+        for (int k = 0; k < 4 && !*grown; k++) {
             int t = m->side_tag[4 * q + k];
-            if (t < 0) continue;
+            if (t < 0 || (!init && was[4 * q + k])) continue;
             const int *c = &m->quad[4 * q];
             double sa, sb, L = cad_face_edge_length(face, t), x[2];
             double *h = &held[2 * (4 * q + k)];
@@ -532,7 +536,11 @@ static sq_status boundary_folded(const cad_face *face, const sq_relax_mesh *m, c
             if (fabs(sb - sa) > 0.5 * L) mid += mid < 0.5 * L ? 0.5 * L : -0.5 * L;
             SQ_TRY(cad_face_edge_eval(face, t, mid, x, NULL, NULL, err));
             const double *p = &m->xy[2 * c[(k + 2) % 4]], *r = &m->xy[2 * c[(k + 3) % 4]];
-            *folded = (r[0] - p[0]) * (x[1] - p[1]) - (r[1] - p[1]) * (x[0] - p[0]) < 0.0;
+            int f = (r[0] - p[0]) * (x[1] - p[1]) - (r[1] - p[1]) * (x[0] - p[0]) < 0.0;
+            if (init)
+                was[4 * q + k] = (char)f;
+            else
+                *grown = f;
         }
     return SQ_OK;
 }
@@ -542,6 +550,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
     relax_work w = {0};
     sq_status st = prepare(face, m, &w, err);
     double *d = NULL, *p = NULL, *s0 = NULL, *held = NULL;
+    char *was = NULL;
     sem_sparse *A = NULL;
     m->folded = 0;
     if (st == SQ_OK) {
@@ -549,7 +558,8 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
         p = malloc(sizeof(double) * 2 * ((size_t)m->nv + 1));
         s0 = malloc(sizeof(double) * ((size_t)m->nv + 1));
         held = malloc(sizeof(double) * 8 * ((size_t)m->nq + 1));
-        if (!d || !p || !s0 || !held) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        was = malloc(4 * (size_t)m->nq + 1);
+        if (!d || !p || !s0 || !held || !was) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
         for (long i = 0; held && i < 8L * m->nq; i++)
             held[i] = -1.0;
     }
@@ -562,6 +572,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
             hi[c] = fmax(hi[c], m->xy[2 * i + c]);
         }
     const double extent = hypot(hi[0] - lo[0], hi[1] - lo[1]);
+    if (st == SQ_OK && m->stop_on_fold) st = boundary_folds(face, m, &w, held, was, 1, &m->folded, err);
     int fresh = 1;
     for (int it = 0; it < MAX_NEWTON && st == SQ_OK && w.ndof > 0 && E < HUGE_VAL; it++) {
         for (int i = 0; i < m->nv && st == SQ_OK; i++)
@@ -620,7 +631,8 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
         E = E1;
         /* a fold that the relaxation made is not undone by its later steps
          * (naca0012 with its singular points free: from the 6th step on) */
-        if (m->stop_on_fold && st == SQ_OK) st = boundary_folded(face, m, &w, held, &m->folded, err);
+        if (m->stop_on_fold && st == SQ_OK)
+            st = boundary_folds(face, m, &w, held, was, 0, &m->folded, err);
         if (m->folded || (done && (fresh || good))) break;
         /* the Hessian factored afresh for every step until they become
          * small (the last, linearly converging ones: by about 0.3 each),
@@ -631,6 +643,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
         st = compass(face, m, &w, phase, err);
     sem_sparse_free(&A);
     free(held);
+    free(was);
     free(d);
     free(p);
     free(s0);

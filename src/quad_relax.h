@@ -31,8 +31,9 @@ typedef struct {
     const int *side_tag; /* 4*nq: CAD edge under side k (vertex k to k+1), or -1 */
     const int *fixed;    /* nv: 1 = does not move */
     /* give up as soon as the curve under a boundary side crosses the line
-     * of its quad's opposite side (the curved quad folds): folded = 1 and
-     * xy where the relaxation stopped */
+     * of its quad's opposite side where it did not at the start (the
+     * relaxation folded a curved quad): folded = 1 and xy where the
+     * relaxation stopped */
     int stop_on_fold;
     int folded;
 } sq_relax_mesh;
