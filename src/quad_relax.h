@@ -1,17 +1,22 @@
 /* semquad — global relaxation of a quad mesh's vertices towards an
  * orthogonal (conformal up to a stretch) map.
  *
- * The vertices minimize the discrete Dirichlet energy of the map from the
- * mesh's parameter space (every quad a unit square) to the plane,
- * E = 1/2 sum over quad sides |x_a - x_b|^2, with the vertices on the face
- * boundary free to slide along their CAD curve.  Among maps of a patch onto
+ * The vertices minimize the discrete Winslow energy of the map from the
+ * mesh's parameter space (every quad a unit square) to the plane, the sum
+ * over quad corners of |J|_F^2 / det J with J = [e1 e2] the corner's edges
+ * (the Dirichlet energy of the inverse map, Winslow 1966; infinite at a
+ * corner that is not convex), with the vertices on the face boundary free
+ * to slide along their CAD curve.  Among maps of a patch onto
  * itself with its corners fixed, the minimizer is a conformal map followed
  * by an affine stretch (the patch's conformal modulus against its chord
  * counts), so grid lines cross at right angles away from the corners and
  * meet the boundary orthogonally — the natural boundary condition of the
- * sliding vertices.  Gauss–Newton: each step solves the quadratic energy
- * with boundary vertices moving along their tangent (one sparse SPD solve,
- * CHOLMOD), then projects them back onto the curve.
+ * sliding vertices.  Projected Newton: each step solves with the sum of
+ * the corners' Hessians made positive semi-definite (closed form), the
+ * boundary vertices moving along their tangent (one sparse SPD solve,
+ * CHOLMOD, its symbolic analysis kept; the last steps reuse the last
+ * factorization), then projects them back onto the curve; a compass search
+ * on the worst quads follows.
  *
  * The caller fixes what must not move (singular points, face corners,
  * boundary-layer vertices); a boundary vertex slides only when both of its
