@@ -15,12 +15,11 @@ sem_method sq_guiding_method_auto(const sq_face_info *info)
     return SEM_CG;
 }
 
-sq_status sq_guiding_boundary_value(const cad_face *face, int edge, const double x[2],
-                                    double uv[2], sq_error *err)
+sq_status sq_guiding_boundary_value(const cad_face *face, int edge, const double x[2], double uv[2],
+                                    sq_error *err)
 {
-    double s, t[2];
-    SQ_TRY(cad_face_edge_project(face, edge, x, &s, NULL, NULL, err));
-    SQ_TRY(cad_face_edge_eval(face, edge, s, NULL, t, NULL, err));
+    double t[2];
+    SQ_TRY(cad_face_edge_tangent_near(face, edge, x, t, err));
     double theta = atan2(t[1], t[0]); /* Marcon 2019, eq. (3) */
     uv[0] = cos(4.0 * theta);
     uv[1] = sin(4.0 * theta);
@@ -101,8 +100,9 @@ sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
         st = sem_field_create(mesh, order, 1, &comp[c], err);
         if (st == SQ_OK) st = sem_poisson_solve(solver, &data, comp[c], err);
         if (st == SQ_OK) st = ctx.status;
-        if (st == SQ_OK) st = sem_field_error(comp[c], 0, zero_exact, NULL, 0,
-                                              c ? &out->l2_v : &out->l2_u, NULL, err);
+        if (st == SQ_OK)
+            st = sem_field_error(comp[c], 0, zero_exact, NULL, 0, c ? &out->l2_v : &out->l2_u, NULL,
+                                 err);
     }
     if (st == SQ_OK) {
         int nm = out->uv->nmodes;
