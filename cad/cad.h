@@ -114,6 +114,12 @@ sq_status cad_face_edge_green(const cad_face *face, int edge, double s0, double 
 sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2], double *s,
                                 double foot[2], double *dist, sq_error *err);
 
+/* The unit tangent (direction of travel) of edge `edge` at its closest
+ * point to p: cad_face_edge_project then cad_face_edge_eval, without the
+ * two arc-length conversions (boundary data at many points). */
+sq_status cad_face_edge_tangent_near(const cad_face *face, int edge, const double p[2],
+                                     double tangent[2], sq_error *err);
+
 /* ---- constrained Delaunay refinement (CGAL) ------------------------------ */
 
 /* Local target size at a point; return <= 0 for "no bound here". */

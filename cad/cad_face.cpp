@@ -40,7 +40,8 @@
 #include <cmath>
 #include <memory>
 
-namespace {
+namespace
+{
 
 // 10-point Gauss-Legendre rule on [-1, 1] (Abramowitz & Stegun, table 25.4).
 const double GL_X[5] = {0.1488743389816312108848260, 0.4333953941292471907992659,
@@ -53,8 +54,8 @@ const double GL_W[5] = {0.2955242247147528701738930, 0.2692667193099963550912269
 struct Edge {
     TopoDS_Edge edge;
     Handle(BRepAdaptor_Curve) curve;
-    double u0 = 0, u1 = 0;  // parameter range
-    bool reversed = false;  // travelled from u1 to u0
+    double u0 = 0, u1 = 0; // parameter range
+    bool reversed = false; // travelled from u1 to u0
     double length = 0;
     cad_edge_type type = CAD_EDGE_OTHER;
     int loop = 0;
@@ -240,20 +241,23 @@ struct cad_face {
     double loop_area(int l) const
     {
         double a = 0;
-        for (int k = 0; k < loop_n[(size_t)l]; ++k) a += edge_area(edges[(size_t)(loop_first[(size_t)l] + k)]);
+        for (int k = 0; k < loop_n[(size_t)l]; ++k)
+            a += edge_area(edges[(size_t)(loop_first[(size_t)l] + k)]);
         return a;
     }
     void reverse_loop(int l)
     {
         auto b = edges.begin() + loop_first[(size_t)l];
         std::reverse(b, b + loop_n[(size_t)l]);
-        for (int k = 0; k < loop_n[(size_t)l]; ++k) b[k].reversed = !b[k].reversed;
+        for (int k = 0; k < loop_n[(size_t)l]; ++k)
+            b[k].reversed = !b[k].reversed;
     }
     gp_Pnt start3d(const Edge &e) const { return e.curve->Value(e.reversed ? e.u1 : e.u0); }
     gp_Pnt end3d(const Edge &e) const { return e.curve->Value(e.reversed ? e.u0 : e.u1); }
 };
 
-namespace {
+namespace
+{
 
 sq_status face_create(const cad_model *model, int index, cad_face **out, sq_error *err)
 {
@@ -319,7 +323,8 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
         }
         int cnt = (int)f->edges.size() - first;
         if (cnt == 0) {
-            if (w == 0) return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d: outer loop has no edge", index);
+            if (w == 0)
+                return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d: outer loop has no edge", index);
             continue; // an empty inner wire: ignore
         }
         f->loop_first.push_back(first);
@@ -327,12 +332,15 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
     }
     int nl = (int)f->loop_first.size();
     for (int l = 0; l < nl; ++l)
-        for (int k = 0; k < f->loop_n[(size_t)l]; ++k) f->edges[(size_t)(f->loop_first[(size_t)l] + k)].loop = l;
+        for (int k = 0; k < f->loop_n[(size_t)l]; ++k)
+            f->edges[(size_t)(f->loop_first[(size_t)l] + k)].loop = l;
 
     // Size of the face: drop edges shorter than a tiny fraction of it.
     double total = 0;
-    for (const Edge &e : f->edges) total += e.length;
-    if (!(total > 0)) return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d has a degenerate boundary", index);
+    for (const Edge &e : f->edges)
+        total += e.length;
+    if (!(total > 0))
+        return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d has a degenerate boundary", index);
     {
         std::vector<Edge> kept;
         std::vector<int> first, cnt;
@@ -366,7 +374,8 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
         if (zplane)
             f->reverse_loop(0); // face normal along -z: keep x, y, walk the loops the other way
         else
-            for (double &c : f->Y) c = -c; // mirrored frame
+            for (double &c : f->Y)
+                c = -c; // mirrored frame
     }
     for (int l = 1; l < nl; ++l)
         if (f->loop_area(l) > 0) f->reverse_loop(l);
@@ -403,7 +412,8 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
             }
             double pj[2];
             f->to2d(j, pj);
-            for (int d = 0; d < 2; ++d) a.end[d] = b.start[d] = pj[d];
+            for (int d = 0; d < 2; ++d)
+                a.end[d] = b.start[d] = pj[d];
         }
     }
     *out = f.release();
@@ -437,8 +447,7 @@ sq_status cad_face_create(const cad_model *model, int index, cad_face **out, sq_
     if (!model) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_create: model is NULL");
     try {
         return face_create(model, index, out, err);
-    }
-    catch (const Standard_Failure &e) {
+    } catch (const Standard_Failure &e) {
         return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d: OpenCASCADE %s: %s", index,
                        e.DynamicType()->Name(), e.GetMessageString() ? e.GetMessageString() : "");
     }
@@ -533,8 +542,9 @@ sq_status cad_face_edge_green(const cad_face *face, int edge, double s0, double 
     const Edge &e = face->edges[(size_t)edge];
     double slack = 1e-9 * e.length;
     if (!(s0 >= -slack && s1 <= e.length + slack))
-        return SQ_FAIL(err, SQ_ERR_USAGE, "arc lengths [%.17g, %.17g] outside [0, %.17g] on edge %d",
-                       s0, s1, e.length, edge);
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "arc lengths [%.17g, %.17g] outside [0, %.17g] on edge %d", s0, s1, e.length,
+                       edge);
     if (!(s1 > s0)) return SQ_OK;
     try {
         s0 = std::max(0.0, s0), s1 = std::min(e.length, s1);
@@ -547,41 +557,56 @@ sq_status cad_face_edge_green(const cad_face *face, int edge, double s0, double 
     SQCAD_CATCH(err)
 }
 
-sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2], double *s,
-                                double foot[2], double *dist, sq_error *err)
+// Parameter of the closest point of edge e to P, and its squared distance.
+static double closest_u(const Edge &e, const gp_Pnt &P, double *d2_out)
 {
-    if (!face || !p) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_edge_project: NULL argument");
+    // Candidates: the end points and the extrema of the distance.
+    double best_u = e.u0, best_d2 = P.SquareDistance(e.curve->Value(e.u0));
+    double d2 = P.SquareDistance(e.curve->Value(e.u1));
+    if (d2 < best_d2) best_d2 = d2, best_u = e.u1;
+    Extrema_ExtPC ext(P, *e.curve, e.u0, e.u1, 1e-12);
+    if (ext.IsDone())
+        for (int i = 1; i <= ext.NbExt(); ++i)
+            if (ext.SquareDistance(i) < best_d2)
+                best_d2 = ext.SquareDistance(i), best_u = ext.Point(i).Parameter();
+    // Polish with Newton on (C(u) - P) . C'(u) = 0, kept if it improves.
+    double u = best_u;
+    for (int it = 0; it < 8; ++it) {
+        gp_Pnt c;
+        gp_Vec d1, d2v;
+        e.curve->D2(u, c, d1, d2v);
+        gp_Vec r(P, c);
+        double g = r.Dot(d1), dg = d1.SquareMagnitude() + r.Dot(d2v);
+        if (!(dg > 0)) break;
+        double un = std::min(e.u1, std::max(e.u0, u - g / dg));
+        double dn = P.SquareDistance(e.curve->Value(un));
+        if (dn > best_d2) break;
+        double step = std::fabs(un - u);
+        u = un, best_d2 = dn, best_u = un;
+        if (step <= 1e-16 * std::max(1.0, std::fabs(u))) break;
+    }
+    *d2_out = best_d2;
+    return best_u;
+}
+
+static sq_status check_edge(const cad_face *face, int edge, const double *p, const char *fn,
+                            sq_error *err)
+{
+    if (!face || !p) return SQ_FAIL(err, SQ_ERR_USAGE, "%s: NULL argument", fn);
     if (edge < 0 || edge >= (int)face->edges.size())
         return SQ_FAIL(err, SQ_ERR_USAGE, "edge %d out of range (face has %d edges)", edge,
                        (int)face->edges.size());
+    return SQ_OK;
+}
+
+sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2], double *s,
+                                double foot[2], double *dist, sq_error *err)
+{
+    SQ_TRY(check_edge(face, edge, p, "cad_face_edge_project", err));
     try {
         const Edge &e = face->edges[(size_t)edge];
-        gp_Pnt P = face->to3d(p);
-        // Candidates: the end points and the extrema of the distance.
-        double best_u = e.u0, best_d2 = P.SquareDistance(e.curve->Value(e.u0));
-        double d2 = P.SquareDistance(e.curve->Value(e.u1));
-        if (d2 < best_d2) best_d2 = d2, best_u = e.u1;
-        Extrema_ExtPC ext(P, *e.curve, e.u0, e.u1, 1e-12);
-        if (ext.IsDone())
-            for (int i = 1; i <= ext.NbExt(); ++i)
-                if (ext.SquareDistance(i) < best_d2)
-                    best_d2 = ext.SquareDistance(i), best_u = ext.Point(i).Parameter();
-        // Polish with Newton on (C(u) - P) . C'(u) = 0, kept if it improves.
-        double u = best_u;
-        for (int it = 0; it < 8; ++it) {
-            gp_Pnt c;
-            gp_Vec d1, d2v;
-            e.curve->D2(u, c, d1, d2v);
-            gp_Vec r(P, c);
-            double g = r.Dot(d1), dg = d1.SquareMagnitude() + r.Dot(d2v);
-            if (!(dg > 0)) break;
-            double un = std::min(e.u1, std::max(e.u0, u - g / dg));
-            double dn = P.SquareDistance(e.curve->Value(un));
-            if (dn > best_d2) break;
-            double step = std::fabs(un - u);
-            u = un, best_d2 = dn, best_u = un;
-            if (step <= 1e-16 * std::max(1.0, std::fabs(u))) break;
-        }
+        double best_d2;
+        const double best_u = closest_u(e, face->to3d(p), &best_d2);
         double sf = s_of_u(e, best_u);
         double st = std::min(e.length, std::max(0.0, e.reversed ? e.length - sf : sf));
         if (s) *s = st;
@@ -591,6 +616,20 @@ sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2
             if (st == e.length) foot[0] = e.end[0], foot[1] = e.end[1];
         }
         if (dist) *dist = std::sqrt(best_d2);
+        return SQ_OK;
+    }
+    SQCAD_CATCH(err)
+}
+
+sq_status cad_face_edge_tangent_near(const cad_face *face, int edge, const double p[2],
+                                     double tangent[2], sq_error *err)
+{
+    SQ_TRY(check_edge(face, edge, p, "cad_face_edge_tangent_near", err));
+    if (!tangent) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_edge_tangent_near: NULL tangent");
+    try {
+        const Edge &e = face->edges[(size_t)edge];
+        double d2;
+        face->eval_u(e, closest_u(e, face->to3d(p), &d2), NULL, tangent, NULL);
         return SQ_OK;
     }
     SQCAD_CATCH(err)

@@ -2,7 +2,8 @@
 # Install exactly the Debian 12 packages semquad needs to build, test and draw.
 # python3-gmsh (with /usr/bin/python3) is for t604, Gmsh's own reader on our
 # MSH output, and t603's run of ../shared/tools/quadstats.py; both skip (77)
-# without it.
+# without it.  gmsh (the executable, same 4.8.4 library) is what
+# bench/compare_gmsh.py times against.
 # Idempotent: quiet when everything is present; runs apt-get update only when
 # something is missing.
 set -eu
@@ -12,7 +13,7 @@ libocct-data-exchange-dev \
 libcgal-dev libgmp-dev libmpfr-dev \
 libgsl-dev liblapacke-dev libopenblas-dev libsuitesparse-dev \
 librsvg2-bin \
-python3-gmsh"
+python3-gmsh gmsh"
 missing=""
 for p in $PKGS; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -6,9 +6,9 @@
  *  2. affine elements (all modes above degree 1 zero) are inverted in
  *     closed form; on the others Newton starts from the inverse of the
  *     straight-sided triangle through the vertices;
- *  3. bounding box of each element from its map on a lattice of order
- *     2*order + 2, enlarged by 2% of its diagonal (the map between samples
- *     bulges by far less for any valid element);
+ *  3. bounding box of each element: its vertices' if affine, else from its
+ *     map on a lattice of order 2*order + 2; enlarged by 2% of its diagonal
+ *     (the map between samples bulges by far less for any valid element);
  *  4. a uniform grid of about one cell per element over the mesh box; each
  *     cell lists the elements whose box meets it (compressed rows);
  *  5. find: walk from the hint (Newton in the current element; step across
@@ -130,35 +130,23 @@ sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_err
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "locator_create: out of memory (%d elements)", nt);
         goto fail;
     }
-    /* sample lattice */
-    const int ns = 2 * L->go + 2;
+    const int ns = 2 * L->go + 2; /* sample lattice of curved elements */
     double bx0 = HUGE_VAL, bx1 = -HUGE_VAL, by0 = HUGE_VAL, by1 = -HUGE_VAL;
     for (int e = 0; e < nt; ++e) {
         double *b = L->ebox + 4 * (size_t)e;
-        b[0] = b[2] = HUGE_VAL;
-        b[1] = b[3] = -HUGE_VAL;
-        for (int j = 0; j <= ns; ++j)
-            for (int i = 0; i + j <= ns; ++i) {
-                double x[2];
-                sem_locator_map(L, e, (double)i / ns, (double)j / ns, x, NULL);
-                if (!(isfinite(x[0]) && isfinite(x[1]))) {
-                    st = SQ_FAIL(err, SQ_ERR_USAGE, "locator_create: element %d has non-finite nodes", e);
-                    goto fail;
-                }
-                b[0] = fmin(b[0], x[0]);
-                b[1] = fmax(b[1], x[0]);
-                b[2] = fmin(b[2], x[1]);
-                b[3] = fmax(b[3], x[1]);
-            }
-        const double pad = 0.02 * hypot(b[1] - b[0], b[3] - b[2]) + 1e-300;
-        b[0] -= pad;
-        b[1] += pad;
-        b[2] -= pad;
-        b[3] += pad;
-        bx0 = fmin(bx0, b[0]);
-        bx1 = fmax(bx1, b[1]);
-        by0 = fmin(by0, b[2]);
-        by1 = fmax(by1, b[3]);
+        /* the vertices, their box, and the map's derivative at vertex 0 */
+        double xv[3][2], J[4];
+        const double det = sem_locator_map(L, e, 0.0, 0.0, xv[0], J);
+        sem_locator_map(L, e, 1.0, 0.0, xv[1], NULL);
+        sem_locator_map(L, e, 0.0, 1.0, xv[2], NULL);
+        b[0] = fmin(xv[0][0], fmin(xv[1][0], xv[2][0]));
+        b[1] = fmax(xv[0][0], fmax(xv[1][0], xv[2][0]));
+        b[2] = fmin(xv[0][1], fmin(xv[1][1], xv[2][1]));
+        b[3] = fmax(xv[0][1], fmax(xv[1][1], xv[2][1]));
+        if (!(isfinite(b[0]) && isfinite(b[1]) && isfinite(b[2]) && isfinite(b[3]))) {
+            st = SQ_FAIL(err, SQ_ERR_USAGE, "locator_create: element %d has non-finite nodes", e);
+            goto fail;
+        }
         /* affine: every mode of degree >= 2 negligible against the size */
         const double *g = L->gm + 2 * (size_t)L->ngm * e;
         double hi = 0.0;
@@ -168,29 +156,48 @@ sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_err
                     const int m = sem_tri_node_index(L->go, p, q);
                     hi = fmax(hi, fmax(fabs(g[2 * m]), fabs(g[2 * m + 1])));
                 }
-        double x0[2], J[4];
-        const double det = sem_locator_map(L, e, 0.0, 0.0, x0, J);
         double *a = L->aff + 6 * (size_t)e;
-        a[0] = x0[0];
-        a[1] = x0[1];
+        a[0] = xv[0][0];
+        a[1] = xv[0][1];
         if (hi <= 1e-14 * (b[1] - b[0] + b[3] - b[2]) && det != 0.0) {
+            /* the box of a straight-sided triangle is its vertices' */
             a[2] = J[3] / det;
             a[3] = -J[1] / det;
             a[4] = -J[2] / det;
             a[5] = J[0] / det;
             L->is_aff[e] = 1;
         } else {
-            /* the straight-sided triangle through the vertices */
-            double x1[2], x2[2];
-            sem_locator_map(L, e, 1.0, 0.0, x1, NULL);
-            sem_locator_map(L, e, 0.0, 1.0, x2, NULL);
-            const double j0 = x1[0] - x0[0], j1 = x2[0] - x0[0], j2 = x1[1] - x0[1],
-                         j3 = x2[1] - x0[1], d = j0 * j3 - j1 * j2;
+            for (int j = 0; j <= ns; ++j)
+                for (int i = 0; i + j <= ns; ++i) {
+                    double x[2];
+                    sem_locator_map(L, e, (double)i / ns, (double)j / ns, x, NULL);
+                    if (!(isfinite(x[0]) && isfinite(x[1]))) {
+                        st = SQ_FAIL(err, SQ_ERR_USAGE,
+                                     "locator_create: element %d has non-finite nodes", e);
+                        goto fail;
+                    }
+                    b[0] = fmin(b[0], x[0]);
+                    b[1] = fmax(b[1], x[0]);
+                    b[2] = fmin(b[2], x[1]);
+                    b[3] = fmax(b[3], x[1]);
+                }
+            /* Newton's start: the straight-sided triangle through the vertices */
+            const double j0 = xv[1][0] - xv[0][0], j1 = xv[2][0] - xv[0][0],
+                         j2 = xv[1][1] - xv[0][1], j3 = xv[2][1] - xv[0][1], d = j0 * j3 - j1 * j2;
             a[2] = j3 / d;
             a[3] = -j1 / d;
             a[4] = -j2 / d;
             a[5] = j0 / d;
         }
+        const double pad = 0.02 * hypot(b[1] - b[0], b[3] - b[2]) + 1e-300;
+        b[0] -= pad;
+        b[1] += pad;
+        b[2] -= pad;
+        b[3] += pad;
+        bx0 = fmin(bx0, b[0]);
+        bx1 = fmax(bx1, b[1]);
+        by0 = fmin(by0, b[2]);
+        by1 = fmax(by1, b[3]);
     }
     /* grid of about one cell per element */
     const double W = bx1 - bx0, H = by1 - by0;

@@ -28,8 +28,13 @@
 #include <string.h>
 
 #define CG_NMAX ((SEM_MAX_ORDER + 1) * (SEM_MAX_ORDER + 2) / 2)
-/* Pure Neumann data must balance to this fraction of its size. */
-#define CG_COMPAT_RTOL 1e-6
+/* Pure Neumann data must balance to this fraction of its size.  It is
+ * integrated by quadrature on the curved geometry, whose edges' arc length
+ * is off by up to about 1e-5 relative near sharp features (naca0012's
+ * trailing edge: the H field's curvature data, 5e-6); data that is really
+ * incompatible is off by far more (a wrong singularity pattern: a multiple
+ * of pi/2 against 2 pi). */
+#define CG_COMPAT_RTOL 1e-4
 
 typedef struct {
     const sem_tri_mesh *mesh;

@@ -10,6 +10,7 @@
 #include "write_quad_svg.h"
 #include "write_quad_vtu.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -21,6 +22,8 @@
  * and 8, for an area/size^2 of 314).  docs/mesh.md. */
 #define SQ_MESH_FIELD_ORDER 4
 #define SQ_MESH_HTHETA_ORDER 6
+/* without --size: halvings of the default size tried when quads fold */
+#define DEFAULT_SIZE_HALVINGS 3
 
 static int ends_with(const char *s, const char *suffix)
 {
@@ -47,7 +50,7 @@ static void progress(int quiet, const char *fmt, const char *a, double t)
 sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
 {
     const char *val;
-    int bl[64];
+    int bl[64], size_given = 0;
     sq_layout_options lo;
     sq_layout_options_default(&lo);
     lo.field.order = SQ_MESH_FIELD_ORDER;
@@ -67,6 +70,7 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
         } else if (!strcmp(a, "--size")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_double(a, val, 1e-300, 1e300, &mo.size, err));
+            size_given = 1;
         } else if (!strcmp(a, "--field-order")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_int(a, val, 1, 16, &lo.field.order, err));
@@ -161,6 +165,20 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
         }
         st = sq_mesh_layout(f, r.info, &r.layout, &mo, &m, err);
         if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, &q, err);
+        /* Without --size the default, sqrt(area)/8, can be too coarse for a
+         * small curved feature (an aerofoil in a large box: its curved quads
+         * fold): halve it, a few times, rather than fail. */
+        const double size0 = sqrt(r.layout.face_area) / 8.0;
+        for (int k = 1; !size_given && st == SQ_OK && q.inverted > 0 && k <= DEFAULT_SIZE_HALVINGS;
+             k++) {
+            mo.size = size0 / (double)(1 << k);
+            if (!args.quiet)
+                fprintf(stderr, "semquad: note: %d quads fold at size %.4g; trying %.4g\n",
+                        q.inverted, 2.0 * mo.size, mo.size);
+            sq_quad_mesh_free(&m);
+            st = sq_mesh_layout(f, r.info, &r.layout, &mo, &m, err);
+            if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, &q, err);
+        }
         t.mesh = sq_now() - t1;
         if (st == SQ_OK && q.inverted > 0)
             st = SQ_FAIL(err, SQ_ERR_LAYOUT,

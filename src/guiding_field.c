@@ -15,21 +15,26 @@ sem_method sq_guiding_method_auto(const sq_face_info *info)
     return SEM_CG;
 }
 
-sq_status sq_guiding_boundary_value(const cad_face *face, int edge, const double x[2],
-                                    double uv[2], sq_error *err)
+sq_status sq_guiding_boundary_value(const cad_face *face, int edge, const double x[2], double uv[2],
+                                    sq_error *err)
 {
-    double s, t[2];
-    SQ_TRY(cad_face_edge_project(face, edge, x, &s, NULL, NULL, err));
-    SQ_TRY(cad_face_edge_eval(face, edge, s, NULL, t, NULL, err));
+    double t[2];
+    SQ_TRY(cad_face_edge_tangent_near(face, edge, x, t, err));
     double theta = atan2(t[1], t[0]); /* Marcon 2019, eq. (3) */
     uv[0] = cos(4.0 * theta);
     uv[1] = sin(4.0 * theta);
     return SQ_OK;
 }
 
+/* Boundary data of one component.  The two components' solves visit the
+ * same boundary points in the same order, so the first pass keeps (x, u, v)
+ * of each point and the second reuses them (one CAD projection per point,
+ * not two); a point that does not match is projected again. */
 typedef struct {
     const cad_face *face;
     int comp;
+    long k, n, cap;   /* position in this pass; points kept by the first */
+    double *memo;     /* 4 n: x, y, u, v */
     sq_status status; /* first failure, latched: the solver's callback has no error path */
     sq_error *err;
 } bdata_ctx;
@@ -39,7 +44,24 @@ static double boundary_data(const double x[2], const double n[2], int tag, void 
     (void)n;
     bdata_ctx *c = p;
     double uv[2] = {0.0, 0.0};
+    const long k = c->k++;
+    if (c->comp == 1 && k < c->n && c->memo[4 * k] == x[0] && c->memo[4 * k + 1] == x[1])
+        return c->memo[4 * k + 3];
     if (c->status == SQ_OK) c->status = sq_guiding_boundary_value(c->face, tag, x, uv, c->err);
+    if (c->comp == 0 && c->status == SQ_OK) {
+        if (c->n == c->cap) {
+            const long cap = c->cap ? 2 * c->cap : 256;
+            double *m = realloc(c->memo, sizeof(double) * 4 * (size_t)cap);
+            if (!m) {
+                c->status = SQ_FAIL(c->err, SQ_ERR_INTERNAL, "out of memory");
+                return 0.0;
+            }
+            c->memo = m;
+            c->cap = cap;
+        }
+        double *m = c->memo + 4 * c->n++;
+        m[0] = x[0], m[1] = x[1], m[2] = uv[0], m[3] = uv[1];
+    }
     return uv[c->comp];
 }
 
@@ -70,14 +92,17 @@ sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
     SQ_TRY(sem_poisson_create(mesh, order, m, NULL, NULL, &solver, err));
     sq_status st = sem_field_create(mesh, order, 2, &out->uv, err);
     /* u and v share the matrix: one factorization, two right-hand sides */
+    bdata_ctx ctx = {.face = face, .status = SQ_OK, .err = err};
     for (int c = 0; c < 2 && st == SQ_OK; c++) {
-        bdata_ctx ctx = {face, c, SQ_OK, err};
+        ctx.comp = c;
+        ctx.k = 0;
         sem_poisson_data data = {.g = boundary_data, .g_ctx = &ctx};
         st = sem_field_create(mesh, order, 1, &comp[c], err);
         if (st == SQ_OK) st = sem_poisson_solve(solver, &data, comp[c], err);
         if (st == SQ_OK) st = ctx.status;
-        if (st == SQ_OK) st = sem_field_error(comp[c], 0, zero_exact, NULL, 0,
-                                              c ? &out->l2_v : &out->l2_u, NULL, err);
+        if (st == SQ_OK)
+            st = sem_field_error(comp[c], 0, zero_exact, NULL, 0, c ? &out->l2_v : &out->l2_u, NULL,
+                                 err);
     }
     if (st == SQ_OK) {
         int nm = out->uv->nmodes;
@@ -91,6 +116,7 @@ sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
         out->ndofs = sem_poisson_ndofs(solver);
         st = sem_field_evaluator_create(out->uv, NULL, &out->ev, err);
     }
+    free(ctx.memo);
     sem_field_free(&comp[0]);
     sem_field_free(&comp[1]);
     sem_poisson_free(&solver);

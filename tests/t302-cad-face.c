@@ -38,8 +38,10 @@ static void check_generic(const char *name, const cad_face *f)
     cad_face_frame(f, o, x, y);
     /* Every example lies in z = 0: the frame is the file's own x, y. */
     snprintf(what, sizeof what, "%s frame", name);
-    NEAR(what, fabs(o[0]) + fabs(o[1]) + fabs(o[2]) + fabs(x[0] - 1) + fabs(x[1]) + fabs(x[2]) +
-                   fabs(y[0]) + fabs(y[1] - 1) + fabs(y[2]), 0.0, 1e-15);
+    NEAR(what,
+         fabs(o[0]) + fabs(o[1]) + fabs(o[2]) + fabs(x[0] - 1) + fabs(x[1]) + fabs(x[2]) +
+             fabs(y[0]) + fabs(y[1] - 1) + fabs(y[2]),
+         0.0, 1e-15);
     int ne = 0;
     for (int l = 0; l < cad_face_num_loops(f); ++l) {
         int first = cad_face_loop_first_edge(f, l), n = cad_face_loop_num_edges(f, l);
@@ -56,7 +58,8 @@ static void check_generic(const char *name, const cad_face *f)
             eval(f, e, L, p1, NULL, NULL);
             eval(f, next, 0, p0, NULL, NULL);
             snprintf(what, sizeof what, "%s: gap from edge %d to edge %d", name, e, next);
-            CHECK(p1[0] == p0[0] && p1[1] == p0[1], "%s: (%.17g, %.17g) vs (%.17g, %.17g)", what, p1[0], p1[1], p0[0], p0[1]);
+            CHECK(p1[0] == p0[0] && p1[1] == p0[1], "%s: (%.17g, %.17g) vs (%.17g, %.17g)", what,
+                  p1[0], p1[1], p0[0], p0[1]);
             /* Arc length: p(b) - p(a) = int_a^b t ds, and |t| = 1. */
             for (int j = 0; j < 7; ++j) {
                 double a0 = L * j / 7.0, b0 = a0 + L / 7.0 * 0.37, pa[2], pb[2], t[2], dx = 0,
@@ -93,6 +96,12 @@ static void check_generic(const char *name, const cad_face *f)
                 NEAR(what, dist, d, 1e-9 * L);
                 snprintf(what, sizeof what, "%s edge %d projection foot", name, e);
                 NEAR(what, hypot(foot[0] - p[0], foot[1] - p[1]), 0.0, 1e-9 * L);
+                /* the tangent at the nearest point: the tangent at s0 */
+                double tn[2] = {0.0, 0.0};
+                st = cad_face_edge_tangent_near(f, e, q, tn, &err);
+                CHECK(st == SQ_OK, "%s edge %d tangent_near: %s", name, e, err.msg);
+                snprintf(what, sizeof what, "%s edge %d tangent at the nearest point", name, e);
+                NEAR(what, hypot(tn[0] - t[0], tn[1] - t[1]), 0.0, 1e-9);
             }
         }
     }
@@ -238,13 +247,16 @@ int main(void)
         NEAR("square_hole: clamped projection distance", d, sqrt(5.0), 1e-13);
         CHECK(cad_face_edge_project(f, 5, p, &s, foot, &d, &err) == SQ_ERR_USAGE,
               "project on edge 5 of 5: expected SQ_ERR_USAGE");
+        CHECK(cad_face_edge_tangent_near(f, 5, p, foot, &err) == SQ_ERR_USAGE,
+              "tangent_near on edge 5 of 5: expected SQ_ERR_USAGE");
         CHECK(cad_face_edge_eval(f, 0, 1.5, p, NULL, NULL, &err) == SQ_ERR_USAGE,
               "eval beyond the edge: expected SQ_ERR_USAGE");
         CHECK(cad_face_edge_eval(f, 9, 0, p, NULL, NULL, &err) == SQ_ERR_USAGE,
               "eval on edge 9 of 5: expected SQ_ERR_USAGE");
     }
-    check_corners("square_hole outer", f, 5,
-                  (const double[]){0, 0, 1, 0, 1, 1, 0, 1, 0.75, 0.5}); /* hole starts at (0.75,.5)? */
+    check_corners(
+        "square_hole outer", f, 5,
+        (const double[]){0, 0, 1, 0, 1, 1, 0, 1, 0.75, 0.5}); /* hole starts at (0.75,.5)? */
     cad_face_free(&f);
 
     f = open_face("square");
@@ -329,7 +341,8 @@ int main(void)
             eval(f, e, s - h, NULL, ta, NULL);
             eval(f, e, s + h, NULL, tb, NULL);
             eval(f, e, s, NULL, NULL, &k);
-            double fd = atan2(ta[0] * tb[1] - ta[1] * tb[0], ta[0] * tb[0] + ta[1] * tb[1]) / (2 * h);
+            double fd =
+                atan2(ta[0] * tb[1] - ta[1] * tb[0], ta[0] * tb[0] + ta[1] * tb[1]) / (2 * h);
             char what[128];
             snprintf(what, sizeof what, "naca0012 airfoil curvature at s=%g", s);
             NEAR(what, k, fd, 1e-3 * fmax(1.0, fabs(k)));

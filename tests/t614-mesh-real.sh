@@ -1,0 +1,31 @@
+#!/bin/sh
+# semquad mesh on the real CAD files of ../shared/geometries/real (NekMesh's
+# test inputs), with the fewest interior irregular vertices their README
+# gives: the aerofoil box (2, valence 5) at the default size — which folds
+# curved quads at the aerofoil's leading edge and is halved by the command —
+# and the circle-square's second face (4).  Skipped (77) where the files
+# are absent.
+# usage: t614-mesh-real.sh SEMQUAD REAL_DIR
+set -u
+sq=$1
+real=$2
+[ -n "$real" ] && [ -f "$real/real_aerofoil_box.step" ] || exit 77
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+fail() { echo "$1"; fails=$((fails + 1)); }
+
+"$sq" mesh "$real/real_aerofoil_box.step" -o "$tmp/a.msh" --report "$tmp/a.json" \
+    >/dev/null 2>"$tmp/err"
+[ $? -eq 0 ] || fail "aerofoil box: exit status not 0: $(cat "$tmp/err")"
+grep -q "quads fold at size 0.216" "$tmp/err" || fail "aerofoil box: no note of the halved size"
+grep -q '"irregular_interior_vertices": *2,' "$tmp/a.json" || fail "aerofoil box: not 2 irregular"
+grep -q '"inverted": *0,' "$tmp/a.json" || fail "aerofoil box: inverted quads"
+
+"$sq" mesh "$real/real_circle_square.step" --face 1 --size 5 -q -o "$tmp/c.msh" \
+    --report "$tmp/c.json" 2>"$tmp/err"
+[ $? -eq 0 ] || fail "circle-square: exit status not 0: $(cat "$tmp/err")"
+grep -q '"irregular_interior_vertices": *4,' "$tmp/c.json" || fail "circle-square: not 4 irregular"
+grep -q '"inverted": *0,' "$tmp/c.json" || fail "circle-square: inverted quads"
+
+[ "$fails" -eq 0 ]
