@@ -38,6 +38,13 @@ static sq_status start(long n, sem_sparse **out, sq_error *err)
     /* LL' also in the simplicial case: an LDL' factorization would accept
      * an indefinite matrix, which must be reported instead. */
     a->cc.final_ll = 1;
+    /* Supernodal only from 100 flops per factor entry (CHOLMOD's default:
+     * 40): below, its dense kernels on small supernodes lose to the
+     * simplicial code on one BLAS thread — the relaxation's Hessians (55-75:
+     * naca0012's mesh stage 0.28 -> 0.18 s), the H/theta fields (63-87), the
+     * DG guiding field at P = 4 (57-125) — while the DG field at P = 8
+     * (170-375) is twice as fast supernodal. */
+    a->cc.supernodal_switch = 100;
     a->assembling = 1;
     *out = a;
     return SQ_OK;
