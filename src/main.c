@@ -53,7 +53,7 @@ static const char *usage =
     "      block-structured high-order quad mesh of order Q (1..10, default 4) with\n"
     "      elements of size about h (default sqrt(area)/8, halved up to 3 times while\n"
     "      curved quads fold; --field-order P sets the\n"
-    "      guiding and the H/theta fields, default 4 and 6):\n"
+    "      guiding and the H/theta fields, default 4 and 8):\n"
     "      Gmsh MSH 4.1, Nektar++ XML or VTU by extension;\n"
     "      quality summary on stdout, progress on stderr. --bl grades the elements\n"
     "      geometrically away from the CAD edges E1,E2,.. (indices as semquad info\n"

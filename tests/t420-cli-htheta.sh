@@ -64,6 +64,13 @@ grep -q '"valence2_split": *1,' "$tmp/q.json" || fail "obtuse_quad valence-2: no
 grep -q '"quad_patches": *3,' "$tmp/q.json" || fail "obtuse_quad valence-2: not 3 quad patches"
 grep -q '"origin": *"valence2-split"' "$tmp/q.json" || fail "obtuse_quad valence-2: node origin"
 grep -q 'valence-2 point' "$tmp/q.svg" || fail "obtuse_quad valence-2: not marked in the SVG"
+# the mesh command's own H/θ settings (order 8, grading 1e-2) keep the
+# pattern aligned with the boundary (at order 6: 0.016 deg, over 0.01)
+"$sq" mesh "$ex/obtuse_quad.step" --singularities "$ex/obtuse_quad_v2.txt" --size 0.1 -q \
+    -o "$tmp/q.msh" --report "$tmp/qm.json" 2>"$tmp/err"
+[ $? -eq 0 ] || fail "obtuse_quad valence-2 mesh: exit status not 0: $(cat "$tmp/err")"
+grep -q '"irregular_interior_vertices": *1,' "$tmp/qm.json" ||
+    fail "obtuse_quad valence-2 mesh: not 1 interior irregular vertex"
 # mesh sizes from e^H (Jezdimirović 2021 eq. 21): on the triangle the three
 # kite patches take 4 x 4 quads each, about area / size^2 = 43.3 quads — with
 # a uniform size their short spokes would be refined to match the 0.5-long
