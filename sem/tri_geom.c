@@ -21,6 +21,7 @@ struct sem_tri_geom_sampler {
     double *dlr; /* nn*npts: dl_n/dr at point p, row n (node-major so the
                     per-element sums are axpy's over points, which vectorise) */
     double *dls; /* nn*npts: dl_n/ds */
+    double *w;   /* npts - nn: weights of the rule points (after the nodes) */
 };
 
 double sem_tri_geom_map(const sem_tri_lagrange *lag, const double *gxy, double r, double s,
@@ -74,7 +75,8 @@ sq_status sem_tri_geom_sampler_create(const sem_tri_lagrange *lag, sem_tri_geom_
     S->npts = nn + q->npts;
     S->dlr = malloc(sizeof(double) * (size_t)S->npts * (size_t)nn);
     S->dls = malloc(sizeof(double) * (size_t)S->npts * (size_t)nn);
-    if (!S->dlr || !S->dls) {
+    S->w = malloc(sizeof(double) * (size_t)q->npts);
+    if (!S->dlr || !S->dls || !S->w) {
         sem_tri_quad_free(&q);
         sem_tri_geom_sampler_free(&S);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "tri_geom_sampler_create: out of memory");
@@ -88,6 +90,8 @@ sq_status sem_tri_geom_sampler_create(const sem_tri_lagrange *lag, sem_tri_geom_
             S->dls[(size_t)k * S->npts + p] = ls[k];
         }
     }
+    for (int p = 0; p < q->npts; ++p)
+        S->w[p] = q->w[p];
     sem_tri_quad_free(&q);
     *out = S;
     return SQ_OK;
@@ -98,16 +102,19 @@ void sem_tri_geom_sampler_free(sem_tri_geom_sampler **s)
     if (!s || !*s) return;
     free((*s)->dlr);
     free((*s)->dls);
+    free((*s)->w);
     free(*s);
     *s = NULL;
 }
 
-double sem_tri_geom_sampler_scaled_jacobian(const sem_tri_geom_sampler *S, const double *gxy)
+/* det J at every sample point (det[S->npts]) */
+static void sample_det(const sem_tri_geom_sampler *S, const double *gxy, double *det)
 {
     /* At most SEM_MAX_NODES nodes plus (SEM_MAX_ORDER+1)^2 rule points. */
     double xr[SEM_MAX_SAMPLES], xs[SEM_MAX_SAMPLES], yr[SEM_MAX_SAMPLES], ys[SEM_MAX_SAMPLES];
     const int nn = S->nn, np = S->npts;
-    for (int p = 0; p < np; ++p) xr[p] = xs[p] = yr[p] = ys[p] = 0.0;
+    for (int p = 0; p < np; ++p)
+        xr[p] = xs[p] = yr[p] = ys[p] = 0.0;
     for (int k = 0; k < nn; ++k) {
         const double gx = gxy[2 * k], gy = gxy[2 * k + 1];
         const double *restrict lr = S->dlr + (size_t)k * np, *restrict ls = S->dls + (size_t)k * np;
@@ -118,9 +125,17 @@ double sem_tri_geom_sampler_scaled_jacobian(const sem_tri_geom_sampler *S, const
             ys[p] += gy * ls[p];
         }
     }
+    for (int p = 0; p < np; ++p)
+        det[p] = xr[p] * ys[p] - xs[p] * yr[p];
+}
+
+double sem_tri_geom_sampler_scaled_jacobian(const sem_tri_geom_sampler *S, const double *gxy)
+{
+    double det[SEM_MAX_SAMPLES];
+    sample_det(S, gxy, det);
     double jmin = HUGE_VAL, jmax = -HUGE_VAL;
-    for (int p = 0; p < np; ++p) {
-        const double d = xr[p] * ys[p] - xs[p] * yr[p];
+    for (int p = 0; p < S->npts; ++p) {
+        const double d = det[p];
         if (isnan(d)) return NAN; /* non-finite geometry nodes */
         if (d < jmin) jmin = d;
         if (d > jmax) jmax = d;
@@ -130,6 +145,15 @@ double sem_tri_geom_sampler_scaled_jacobian(const sem_tri_geom_sampler *S, const
      * be positive, so report the ratio with a negative sign instead. */
     if (jmax < 0.0) return jmin / -jmax; /* <= -1 */
     return jmin < 0.0 ? -1.0 : 0.0;
+}
+
+double sem_tri_geom_sampler_area(const sem_tri_geom_sampler *S, const double *gxy)
+{
+    double det[SEM_MAX_SAMPLES], a = 0.0;
+    sample_det(S, gxy, det);
+    for (int p = S->nn; p < S->npts; ++p)
+        a += S->w[p - S->nn] * det[p];
+    return a;
 }
 
 double sem_tri_geom_scaled_jacobian(const sem_tri_lagrange *lag, const double *gxy)

@@ -4,7 +4,6 @@
 #include "tri_curve.h"
 #include "tri_geom.h"
 #include "tri_lagrange.h"
-#include "tri_quad.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -380,36 +379,14 @@ done:
 static sq_status mesh_area(const sem_tri_mesh *m, double *area, sq_error *err)
 {
     sem_tri_lagrange *lag = NULL;
-    sem_tri_quad *q = NULL;
+    sem_tri_geom_sampler *S = NULL;
     SQ_TRY(sem_tri_lagrange_create(m->order, &lag, err));
-    sq_status st = sem_tri_quad_create(2 * m->order, &q, err);
-    /* the basis derivatives at the rule's points, tabulated once */
-    const int nn = m->nodes_per_tri, nq = st == SQ_OK ? q->npts : 0;
-    double *dr = malloc(sizeof(double) * (size_t)nq * nn + 1),
-           *ds = malloc(sizeof(double) * (size_t)nq * nn + 1);
-    if (st == SQ_OK && (!dr || !ds)) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    for (int k = 0; k < nq && st == SQ_OK; k++)
-        sem_tri_lagrange_eval(lag, q->rs[2 * k], q->rs[2 * k + 1], NULL, dr + (size_t)k * nn,
-                              ds + (size_t)k * nn);
+    sq_status st = sem_tri_geom_sampler_create(lag, &S, err);
     double a = 0.0;
-    for (int e = 0; e < m->ntris && st == SQ_OK; e++) {
-        const double *g = &m->gxy[2 * (size_t)nn * (size_t)e];
-        for (int k = 0; k < nq; k++) {
-            const double *lr = dr + (size_t)k * nn, *ls = ds + (size_t)k * nn;
-            double xr = 0.0, xs = 0.0, yr = 0.0, ys = 0.0;
-            for (int n = 0; n < nn; n++) {
-                xr += g[2 * n] * lr[n];
-                xs += g[2 * n] * ls[n];
-                yr += g[2 * n + 1] * lr[n];
-                ys += g[2 * n + 1] * ls[n];
-            }
-            a += q->w[k] * (xr * ys - xs * yr);
-        }
-    }
+    for (int e = 0; e < m->ntris && st == SQ_OK; e++)
+        a += sem_tri_geom_sampler_area(S, &m->gxy[2 * (size_t)m->nodes_per_tri * (size_t)e]);
     *area = a;
-    free(dr);
-    free(ds);
-    sem_tri_quad_free(&q);
+    sem_tri_geom_sampler_free(&S);
     sem_tri_lagrange_free(&lag);
     return st;
 }

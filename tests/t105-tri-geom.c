@@ -103,6 +103,8 @@ int main(void)
         sem_tri_geom_sampler *S = NULL;
         if (sem_tri_geom_sampler_create(L, &S, NULL) != SQ_OK) return 1;
         check("sampler = scaled_jacobian", P, 0, sem_tri_geom_sampler_scaled_jacobian(S, g), sj, 1e-14);
+        check("sampler area = rule on the map", P, 0, sem_tri_geom_sampler_area(S, g), area(L, g, P),
+              1e-14);
         sem_tri_geom_sampler_free(&S);
         sem_tri_geom_sampler_free(&S);
 
