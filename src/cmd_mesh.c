@@ -10,7 +10,6 @@
 #include "write_quad_svg.h"
 #include "write_quad_vtu.h"
 
-#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -168,21 +167,20 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
             cf = sq_htheta_cross_field(&r.htheta);
             mo.field = &cf;
         }
-        st = sq_mesh_layout(f, r.info, &r.layout, &mo, &m, err);
-        if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, &q, err);
         /* Without --size the default, sqrt(area)/8, can be too coarse for a
          * small curved feature (an aerofoil in a large box: its curved quads
          * fold): halve it, a few times, rather than fail. */
-        const double size0 = sqrt(r.layout.face_area) / 8.0;
-        for (int k = 1; !size_given && st == SQ_OK && q.inverted > 0 && k <= DEFAULT_SIZE_HALVINGS;
-             k++) {
-            mo.size = size0 / (double)(1 << k);
-            if (!args.quiet)
-                fprintf(stderr, "semquad: note: %d quads fold at size %.4g; trying %.4g\n",
-                        q.inverted, 2.0 * mo.size, mo.size);
-            sq_quad_mesh_free(&m);
+        for (int k = 0;; k++) {
+            if (k > 0) {
+                mo.size = sq_mesher_default_size(&r.layout) / (double)(1 << k);
+                if (!args.quiet)
+                    fprintf(stderr, "semquad: note: %d quads fold at size %.4g; trying %.4g\n",
+                            q.inverted, 2.0 * mo.size, mo.size);
+                sq_quad_mesh_free(&m);
+            }
             st = sq_mesh_layout(f, r.info, &r.layout, &mo, &m, err);
             if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, &q, err);
+            if (size_given || st != SQ_OK || q.inverted == 0 || k == DEFAULT_SIZE_HALVINGS) break;
         }
         t.mesh = sq_now() - t1;
         if (st == SQ_OK && q.inverted > 0)

@@ -924,6 +924,8 @@ static sq_status raise_order(const cad_face *face, const vmesh *v, int Q, sq_nod
     return SQ_OK;
 }
 
+double sq_mesher_default_size(const sq_layout *L) { return sqrt(L->face_area) / 8.0; }
+
 sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const sq_layout *L,
                          const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
 {
@@ -934,7 +936,7 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
         if (!is_quad(&L->patches[q]))
             return SQ_FAIL(err, SQ_ERR_LAYOUT, "patch %d is not a quad (%d corners)", q,
                            L->patches[q].ncorners);
-    double size = opt->size > 0.0 ? opt->size : sqrt(L->face_area) / 8.0;
+    double size = opt->size > 0.0 ? opt->size : sq_mesher_default_size(L);
     edge_nodes en = {0};
     patch_grid *grids = calloc((size_t)L->npatches + 1, sizeof *grids);
     en.n = malloc(sizeof(int) * ((size_t)L->nedges + 1));

@@ -47,6 +47,9 @@ typedef struct {
 
 void sq_mesher_options_default(sq_mesher_options *opt);
 
+/* The target size where sq_mesher_options.size is not set: sqrt(area)/8. */
+double sq_mesher_default_size(const sq_layout *L);
+
 /* info: the face (its vertices tell which edges a corner joins). */
 sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const sq_layout *L,
                          const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err);
