@@ -507,13 +507,20 @@ double cad_face_edge_length(const cad_face *face, int edge)
     return face->edges[(size_t)edge].length;
 }
 
-sq_status cad_face_edge_eval(const cad_face *face, int edge, double s, double xy[2],
-                             double tangent[2], double *curvature, sq_error *err)
+// The face exists and has edge `edge` (fn names the caller in the message).
+static sq_status check_edge(const cad_face *face, int edge, const char *fn, sq_error *err)
 {
-    if (!face) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_edge_eval: face is NULL");
+    if (!face) return SQ_FAIL(err, SQ_ERR_USAGE, "%s: face is NULL", fn);
     if (edge < 0 || edge >= (int)face->edges.size())
         return SQ_FAIL(err, SQ_ERR_USAGE, "edge %d out of range (face has %d edges)", edge,
                        (int)face->edges.size());
+    return SQ_OK;
+}
+
+sq_status cad_face_edge_eval(const cad_face *face, int edge, double s, double xy[2],
+                             double tangent[2], double *curvature, sq_error *err)
+{
+    SQ_TRY(check_edge(face, edge, "cad_face_edge_eval", err));
     const Edge &e = face->edges[(size_t)edge];
     double slack = 1e-9 * e.length;
     if (!(s >= -slack && s <= e.length + slack))
@@ -535,10 +542,7 @@ sq_status cad_face_edge_green(const cad_face *face, int edge, double s0, double 
 {
     if (!val) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_edge_green: val is NULL");
     *val = 0;
-    if (!face) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_edge_green: face is NULL");
-    if (edge < 0 || edge >= (int)face->edges.size())
-        return SQ_FAIL(err, SQ_ERR_USAGE, "edge %d out of range (face has %d edges)", edge,
-                       (int)face->edges.size());
+    SQ_TRY(check_edge(face, edge, "cad_face_edge_green", err));
     const Edge &e = face->edges[(size_t)edge];
     double slack = 1e-9 * e.length;
     if (!(s0 >= -slack && s1 <= e.length + slack))
@@ -589,20 +593,11 @@ static double closest_u(const Edge &e, const gp_Pnt &P, double *d2_out)
     return best_u;
 }
 
-static sq_status check_edge(const cad_face *face, int edge, const double *p, const char *fn,
-                            sq_error *err)
-{
-    if (!face || !p) return SQ_FAIL(err, SQ_ERR_USAGE, "%s: NULL argument", fn);
-    if (edge < 0 || edge >= (int)face->edges.size())
-        return SQ_FAIL(err, SQ_ERR_USAGE, "edge %d out of range (face has %d edges)", edge,
-                       (int)face->edges.size());
-    return SQ_OK;
-}
-
 sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2], double *s,
                                 double foot[2], double *dist, sq_error *err)
 {
-    SQ_TRY(check_edge(face, edge, p, "cad_face_edge_project", err));
+    SQ_TRY(check_edge(face, edge, "cad_face_edge_project", err));
+    if (!p) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_edge_project: NULL point");
     try {
         const Edge &e = face->edges[(size_t)edge];
         double best_d2;
@@ -624,8 +619,9 @@ sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2
 sq_status cad_face_edge_tangent_near(const cad_face *face, int edge, const double p[2],
                                      double tangent[2], sq_error *err)
 {
-    SQ_TRY(check_edge(face, edge, p, "cad_face_edge_tangent_near", err));
-    if (!tangent) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_edge_tangent_near: NULL tangent");
+    SQ_TRY(check_edge(face, edge, "cad_face_edge_tangent_near", err));
+    if (!p || !tangent)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_edge_tangent_near: NULL point or tangent");
     try {
         const Edge &e = face->edges[(size_t)edge];
         double d2;
