@@ -13,18 +13,6 @@
 #include <stdio.h>
 #include <string.h>
 
-/* Default orders of the mesh command's fields.  The mesh needs the
- * layout's topology and its singular points to a fraction of a quad: order
- * 4 gives the guiding field's layouts and mesh quality of order 8 on every
- * example at a small fraction of the solve.  The H/theta field stays at 8:
- * at 6 its e^H sizes drift (disc: 429 quads at 4, 300 at 6 and 8) and the
- * holonomy check (0.01 deg) fails on obtuse_quad_v2 (0.016 deg); its
- * triangulation is graded to 1e-2 of the size at the singular points
- * instead of 1e-3, which leaves every imposed and natural pattern of the
- * examples with the same mesh at half the time.  docs/mesh.md. */
-#define SQ_MESH_FIELD_ORDER 4
-#define SQ_MESH_HTHETA_ORDER 8
-#define SQ_MESH_HTHETA_GRADING 1e-2
 /* without --size: halvings of the default size tried when quads fold */
 #define DEFAULT_SIZE_HALVINGS 3
 
@@ -55,10 +43,7 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
     const char *val;
     int bl[64], size_given = 0;
     sq_layout_options lo;
-    sq_layout_options_default(&lo);
-    lo.field.order = SQ_MESH_FIELD_ORDER;
-    lo.htheta.order = SQ_MESH_HTHETA_ORDER;
-    lo.htheta.grading = SQ_MESH_HTHETA_GRADING;
+    sq_layout_options_for_mesh(&lo);
     sq_mesher_options mo;
     sq_mesher_options_default(&mo);
     sq_cli_args args;

@@ -127,6 +127,7 @@ static sq_status trace_sizes(const sem_tri_mesh *m, const sq_tri_options *tri, d
     sq_tri_options corners = *tri;
     corners.nextra = tri->nextra - np;
     corners.extra_xy = tri->extra_xy + 2 * np;
+    if (tri->extra_sizes) corners.extra_sizes = tri->extra_sizes + np;
     for (int e = 0; e < m->ntris; e++) {
         const double *a = &m->vxy[2 * m->tri[3 * e]], *b = &m->vxy[2 * m->tri[3 * e + 1]],
                      *c = &m->vxy[2 * m->tri[3 * e + 2]];
@@ -145,7 +146,7 @@ sq_status sq_htheta_compute(const cad_face *face, const sq_pattern *pattern,
 {
     memset(out, 0, sizeof *out);
     double t0 = sq_now();
-    double *extra = NULL, *pxy = NULL;
+    double *extra = NULL, *pxy = NULL, *hextra = NULL;
     int *val = NULL, *sing = NULL;
     sq_status st = sq_face_info_compute(face, &out->info, err);
     if (st == SQ_OK) st = sq_pattern_check(face, &out->info, pattern, &out->balance, err);
@@ -157,10 +158,11 @@ sq_status sq_htheta_compute(const cad_face *face, const sq_pattern *pattern,
     out->points = calloc((size_t)np + 1, sizeof *out->points);
     out->loops = calloc((size_t)out->nloops + 1, sizeof *out->loops);
     extra = malloc(sizeof(double) * 2 * ((size_t)np + 2 * (size_t)nv + 1));
+    hextra = malloc(sizeof(double) * ((size_t)np + 2 * (size_t)nv + 1));
     pxy = malloc(sizeof(double) * (2 * (size_t)np + 1));
     val = malloc(sizeof(int) * ((size_t)np + 1));
     sing = malloc(sizeof(int) * ((size_t)np + 1));
-    if (!out->points || !out->loops || !extra || !pxy || !val || !sing) {
+    if (!out->points || !out->loops || !extra || !hextra || !pxy || !val || !sing) {
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
         goto done;
     }
@@ -192,7 +194,9 @@ sq_status sq_htheta_compute(const cad_face *face, const sq_pattern *pattern,
     tri.nextra = nextra;
     tri.extra_xy = extra;
     const double size = tri.size > 0.0 ? tri.size : sqrt(fabs(out->info.area)) / 3.0;
-    tri.extra_size = opt->grading * size;
+    for (int q = 0; q < nextra; q++)
+        hextra[q] = (q < np && opt->point_grading > 0.0 ? opt->point_grading : opt->grading) * size;
+    tri.extra_sizes = hextra;
     tri.extra_growth = 1.0;
     if ((st = sq_triangulate(face, &tri, &out->tri, err)) != SQ_OK) goto done;
     const sem_tri_mesh *m = out->tri.mesh;
@@ -240,6 +244,7 @@ sq_status sq_htheta_compute(const cad_face *face, const sq_pattern *pattern,
     out->t_solve = sq_now() - t1;
 done:
     free(extra);
+    free(hextra);
     free(pxy);
     free(val);
     free(sing);

@@ -19,6 +19,11 @@ typedef struct {
     double grading;     /* element size at the singular points and singular
                            corners relative to the triangulation size, growing
                            in proportion to the distance (default 1e-3) */
+    double point_grading; /* the same at the imposed points alone (<= 0: grading).
+                             H and θ carry the points' log and arg terms in
+                             closed form, so their smooth remainders need no
+                             refinement there; the singular corners are point
+                             sources of H and do */
     double align_tol_deg; /* misalignment above this breaks holonomy (default 0.01) */
 } sq_htheta_options;
 

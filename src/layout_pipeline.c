@@ -14,6 +14,32 @@ void sq_layout_options_default(sq_layout_options *opt)
     sq_htheta_options_default(&opt->htheta);
 }
 
+/* The mesh command's fields.  The mesh needs the layout's topology and
+ * its singular points to a fraction of a quad: order 4 gives the guiding
+ * field's layouts and mesh quality of order 8 on every example at a small
+ * fraction of the solve.  The H/theta field stays at 8: at 6 its e^H sizes
+ * drift (disc: 429 quads at 4, 300 at 6 and 8) and the holonomy check
+ * (0.01 deg) fails on obtuse_quad_v2 (0.016 deg).  Its triangulation is
+ * graded to 1e-2 of the size at the singular corners (1e-3 by default;
+ * coarser breaks that check too), and only to 1/4 of it at the imposed
+ * points, whose log and arg terms H and θ carry in closed form: the same
+ * layouts as with the defaults (t416), meshes with the same counts and η̄
+ * within 0.002, the disc's H/θ on 105 elements instead of 556 (0.17 ->
+ * 0.04 s).  docs/mesh.md. */
+#define MESH_FIELD_ORDER 4
+#define MESH_HTHETA_ORDER 8
+#define MESH_HTHETA_GRADING 1e-2
+#define MESH_HTHETA_POINT_GRADING 0.25
+
+void sq_layout_options_for_mesh(sq_layout_options *opt)
+{
+    sq_layout_options_default(opt);
+    opt->field.order = MESH_FIELD_ORDER;
+    opt->htheta.order = MESH_HTHETA_ORDER;
+    opt->htheta.grading = MESH_HTHETA_GRADING;
+    opt->htheta.point_grading = MESH_HTHETA_POINT_GRADING;
+}
+
 void sq_layout_result_free(sq_layout_result *r)
 {
     if (!r) return;

@@ -32,6 +32,9 @@ typedef struct {
 } sq_field_summary;
 
 void sq_layout_options_default(sq_layout_options *opt);
+/* The defaults with the fields of `semquad mesh`: cheaper settings that
+ * give the examples the same meshes (layout_pipeline.c). */
+void sq_layout_options_for_mesh(sq_layout_options *opt);
 
 typedef struct {
     sq_field_analysis analysis; /* guiding field (zeroed for a pattern file) */

@@ -80,9 +80,12 @@ sq_status sq_trace_separatrices_stats(const sq_cross_field *field, const cad_fac
 
 /* Marcon 2019 Algorithm 1: from the guess alpha0, the direction alpha of a
  * ray from p0 such that the cross at p0 + c (cos alpha, sin alpha) has a
- * branch along the ray (fixed-point iteration, |Δα| <= tol). */
+ * branch along the ray (fixed-point iteration, |Δα| <= tol), each change
+ * of the ray scaled by gain (1: the paper's iteration; 4/V at a valence-V
+ * point, see trace_start.c). */
 sq_status sq_trace_start_direction(const sq_cross_field *field, const double p0[2], double c,
-                                   double alpha0, double tol, double *alpha, sq_error *err);
+                                   double alpha0, double gain, double tol, double *alpha,
+                                   sq_error *err);
 
 /* One streamline from p0 with start direction alpha0 (not refined), with the
  * stopping rules above except meeting (no other lines); sing[] are singular

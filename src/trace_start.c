@@ -12,15 +12,19 @@
 #define HALF_PI 1.57079632679489661923
 
 sq_status sq_trace_start_direction(const sq_cross_field *field, const double p0[2], double c,
-                                   double alpha0, double tol, double *alpha, sq_error *err)
+                                   double alpha0, double gain, double tol, double *alpha,
+                                   sq_error *err)
 {
     if (!(c > 0.0)) return SQ_FAIL(err, SQ_ERR_USAGE, "Algorithm 1 radius %g must be > 0", c);
     double a = alpha0, d = HUGE_VAL, dprev[2] = {HUGE_VAL, HUGE_VAL};
     int elem = -1;
     /* fixed-point iteration: at the ray's point at distance c, take the
-     * branch psi' nearest to the ray's direction and turn the ray onto it;
-     * near a valence-V point psi turns (4 - V)/4 as fast as the ray, so each
-     * pass shrinks the error about fourfold */
+     * branch psi' nearest to the ray's direction and turn the ray towards
+     * it.  Near a valence-V point psi turns k = (4 - V)/4 as fast as the
+     * ray, so the paper's full turn (gain 1) shrinks the error by |k| per
+     * pass: fourfold at V = 3 and 5, not at all at V = 8 (a two-cycle
+     * around the answer); turned by gain = 1/(1 - k) = 4/V, a pass lands
+     * on the answer where psi is linear in the angle */
     for (int it = 0; it < 500; it++) {
         double p1[2] = {p0[0] + c * cos(a), p0[1] + c * sin(a)}, th;
         if (sq_trace_eval(field, p1, 1e3 * c, &elem, &th))
@@ -30,7 +34,7 @@ sq_status sq_trace_start_direction(const sq_cross_field *field, const double p0[
                            p0[0], p0[1], a, c);
         double ap = th + HALF_PI * nearbyint((a - th) / HALF_PI);
         d = ap - a;
-        a = ap;
+        a += gain * d;
         if (fabs(d) <= tol) {
             *alpha = a;
             return SQ_OK;
@@ -131,9 +135,10 @@ sq_status sq_trace_singular_starts(const sq_tracer *tr, int j, double *alpha, do
     SQ_TRY(sq_face_boundary_distance(tr->face, p0, &dist, err));
     if (c > 0.5 * dist) c = 0.5 * dist;
     *h0 = c;
-    SQ_TRY(sq_trace_start_direction(tr->field, p0, c, 0.0, tr->opt.tol, &alpha[0], err));
+    const double gain = V > 0 ? 4.0 / V : 1.0;
+    SQ_TRY(sq_trace_start_direction(tr->field, p0, c, 0.0, gain, tr->opt.tol, &alpha[0], err));
     for (int k = 1; k < V; k++)
-        SQ_TRY(sq_trace_start_direction(tr->field, p0, c, alpha[0] + 2.0 * M_PI * k / V,
+        SQ_TRY(sq_trace_start_direction(tr->field, p0, c, alpha[0] + 2.0 * M_PI * k / V, gain,
                                         tr->opt.tol, &alpha[k], err));
     for (int k = 0; k < V; k++) {
         alpha[k] = mod2pi(alpha[k]);
@@ -167,7 +172,8 @@ sq_status sq_trace_corner_starts(const sq_tracer *tr, int k, int n, double *alph
     for (int j = 1; j < n && ok; j++) {
         double a;
         sq_error e2;
-        if (sq_trace_start_direction(tr->field, p0, c, beta + dth * j / n, tr->opt.tol, &a, &e2)) {
+        if (sq_trace_start_direction(tr->field, p0, c, beta + dth * j / n, 1.0, tr->opt.tol, &a,
+                                     &e2)) {
             ok = 0;
             break;
         }

@@ -60,7 +60,7 @@ double sq_tri_graded_size(const sq_tri_options *opt, double size, const double x
     double h = size;
     for (int i = 0; i < opt->nextra; i++) {
         double d = hypot(xy[0] - opt->extra_xy[2 * i], xy[1] - opt->extra_xy[2 * i + 1]);
-        double hi = h0 + growth * d;
+        double hi = (opt->extra_sizes ? opt->extra_sizes[i] : h0) + growth * d;
         if (hi < h) h = hi;
     }
     return h;

@@ -28,6 +28,8 @@ typedef struct {
     const double *extra_xy;
     double extra_size;    /* size at the extra points (<= 0: size/8); grows
                              with distance at rate extra_growth up to size */
+    const double *extra_sizes; /* per extra point instead of extra_size (NULL:
+                                  extra_size at all of them) */
     double extra_growth;  /* <= 0: 1/2 */
 } sq_tri_options;
 
