@@ -15,7 +15,12 @@
 //  4. orientation: signed area by Green's theorem; if the outer loop is
 //     negative, it is reversed (plane z = const, normal -z) or the frame is
 //     mirrored (Y -> -Y, other planes); a positive hole is reversed;
-//  5. checks: each edge ends where the next one starts (within tolerance);
+//  5. projection: the closest point of a curve to P by branch and bound on
+//     chords: every chord whose distance from P minus its sagitta bound is
+//     below the best distance so far gets Newton steps on (C(u) - P).C'(u)
+//     inside its parameter interval (usually one chord does; no sampling of
+//     the whole curve per query);
+//  6. checks: each edge ends where the next one starts (within tolerance);
 //     the junction point (the shared vertex's point, else the mid-point of
 //     the two curve ends) is then returned exactly at s = 0 and s = length.
 #include "cad_private.hxx"
@@ -24,8 +29,6 @@
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Tool.hxx>
-#include <Extrema_ExtPC.hxx>
-#include <Extrema_POnCurv.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TopExp.hxx>
 #include <TopoDS.hxx>
@@ -37,6 +40,7 @@
 #include <gp_Vec.hxx>
 
 #include <algorithm>
+#include <utility>
 #include <cmath>
 #include <memory>
 
@@ -61,6 +65,11 @@ struct Edge {
     int loop = 0;
     std::vector<double> tu; // table: parameters, increasing, tu[0] = u0, back = u1
     std::vector<double> ts; // forward arc length at tu
+    // projection: curve points pp at parameters pu (increasing, the C2
+    // intervals refined until each chord turns little) and, per chord, a bound
+    // psag on how far the curve strays from it
+    std::vector<double> pu, psag;
+    std::vector<gp_Pnt> pp;
     double start[2] = {0, 0}, end[2] = {0, 0}; // 2D end points in the direction of travel,
                                                // shared exactly with the neighbouring edges
 };
@@ -97,7 +106,8 @@ void adapt(Edge &e, double a, double b, double whole, int depth)
     adapt(e, m, b, r, depth + 1);
 }
 
-void build_table(Edge &e)
+// The ends of the curve's C2 intervals inside [u0, u1], u0 and u1 included.
+std::vector<double> smooth_breaks(const Edge &e)
 {
     int n = e.curve->NbIntervals(GeomAbs_C2);
     TColStd_Array1OfReal iv(1, n + 1);
@@ -107,6 +117,12 @@ void build_table(Edge &e)
     for (int i = 1; i <= n + 1; ++i)
         if (iv(i) > br.back() && iv(i) < e.u1) br.push_back(iv(i));
     br.push_back(e.u1);
+    return br;
+}
+
+void build_table(Edge &e)
+{
+    const std::vector<double> br = smooth_breaks(e);
     e.tu.assign(1, e.u0);
     e.ts.assign(1, 0.0);
     for (size_t k = 0; k + 1 < br.size(); ++k) {
@@ -118,6 +134,54 @@ void build_table(Edge &e)
         }
     }
     e.length = e.ts.back();
+}
+
+// Distance from P to the segment [A, B] and the segment parameter t of the foot.
+double segment_distance(const gp_Pnt &P, const gp_Pnt &A, const gp_Pnt &B, double *t)
+{
+    gp_Vec ab(A, B), ap(A, P);
+    const double l2 = ab.SquareMagnitude();
+    double tt = l2 > 0 ? std::min(1.0, std::max(0.0, ap.Dot(ab) / l2)) : 0.0;
+    if (t) *t = tt;
+    return P.Distance(A.Translated(tt * ab));
+}
+
+// Chords of [a, b] (curve points A, B) appended to the projection table: split
+// while the curve at 1/4, 1/2, 3/4 of the interval is more than 1/200 of the
+// chord from it (a turn of about 2 degrees).  The sagitta bound is twice the
+// largest of those three distances.
+void project_chords(Edge &e, double a, const gp_Pnt &A, double b, const gp_Pnt &B, double floor,
+                    int depth)
+{
+    double dev = 0;
+    for (int i = 1; i <= 3; ++i)
+        dev = std::max(dev, segment_distance(e.curve->Value(a + 0.25 * i * (b - a)), A, B, NULL));
+    const double m = 0.5 * (a + b);
+    if (depth < 20 && dev > 0.005 * A.Distance(B) + floor) {
+        const gp_Pnt M = e.curve->Value(m);
+        project_chords(e, a, A, m, M, floor, depth + 1);
+        project_chords(e, m, M, b, B, floor, depth + 1);
+        return;
+    }
+    e.psag.push_back(2 * dev + floor);
+    e.pu.push_back(b);
+    e.pp.push_back(B);
+}
+
+// From the C2 intervals, each in 4 pieces to start with.
+void build_projection(Edge &e)
+{
+    const double floor = 1e-12 * e.length;
+    const std::vector<double> br = smooth_breaks(e);
+    e.pu.assign(1, e.u0);
+    e.pp.assign(1, e.curve->Value(e.u0));
+    e.psag.clear();
+    for (size_t k = 0; k + 1 < br.size(); ++k)
+        for (int j = 1; j <= 4; ++j) {
+            const double b = j == 4 ? br[k + 1] : br[k] + 0.25 * j * (br[k + 1] - br[k]);
+            const gp_Pnt A = e.pp.back(); // a copy: the table grows under it
+            project_chords(e, e.pu.back(), A, b, e.curve->Value(b), floor, 0);
+        }
 }
 
 // Forward arc length at parameter u.
@@ -318,6 +382,7 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
             e.type = edge_type(e.curve->GetType());
             e.loop = (int)w;
             build_table(e);
+            build_projection(e);
             tol_vertex = std::max(tol_vertex, BRep_Tool::Tolerance(edge));
             f->edges.push_back(std::move(e));
         }
@@ -561,33 +626,52 @@ sq_status cad_face_edge_green(const cad_face *face, int edge, double s0, double 
     SQCAD_CATCH(err)
 }
 
-// Parameter of the closest point of edge e to P, and its squared distance.
-static double closest_u(const Edge &e, const gp_Pnt &P, double *d2_out)
+// Newton steps on (C(u) - P) . C'(u) = 0 from u inside [a, b], each kept only
+// if it brings the curve closer to P than *best_d2.
+static void polish(const Edge &e, const gp_Pnt &P, double a, double b, double u, double *best_u,
+                   double *best_d2)
 {
-    // Candidates: the end points and the extrema of the distance.
-    double best_u = e.u0, best_d2 = P.SquareDistance(e.curve->Value(e.u0));
-    double d2 = P.SquareDistance(e.curve->Value(e.u1));
-    if (d2 < best_d2) best_d2 = d2, best_u = e.u1;
-    Extrema_ExtPC ext(P, *e.curve, e.u0, e.u1, 1e-12);
-    if (ext.IsDone())
-        for (int i = 1; i <= ext.NbExt(); ++i)
-            if (ext.SquareDistance(i) < best_d2)
-                best_d2 = ext.SquareDistance(i), best_u = ext.Point(i).Parameter();
-    // Polish with Newton on (C(u) - P) . C'(u) = 0, kept if it improves.
-    double u = best_u;
-    for (int it = 0; it < 8; ++it) {
+    double d2 = P.SquareDistance(e.curve->Value(u));
+    if (d2 < *best_d2) *best_d2 = d2, *best_u = u;
+    for (int it = 0; it < 12; ++it) {
         gp_Pnt c;
         gp_Vec d1, d2v;
         e.curve->D2(u, c, d1, d2v);
         gp_Vec r(P, c);
         double g = r.Dot(d1), dg = d1.SquareMagnitude() + r.Dot(d2v);
         if (!(dg > 0)) break;
-        double un = std::min(e.u1, std::max(e.u0, u - g / dg));
+        double un = std::min(b, std::max(a, u - g / dg));
         double dn = P.SquareDistance(e.curve->Value(un));
-        if (dn > best_d2) break;
+        if (!(dn < d2) && un != u) break;
         double step = std::fabs(un - u);
-        u = un, best_d2 = dn, best_u = un;
+        u = un, d2 = dn;
+        if (d2 < *best_d2) *best_d2 = d2, *best_u = u;
         if (step <= 1e-16 * std::max(1.0, std::fabs(u))) break;
+    }
+}
+
+// Parameter of the closest point of edge e to P, and its squared distance
+// (design 5).
+static double closest_u(const Edge &e, const gp_Pnt &P, double *d2_out)
+{
+    const size_t n = e.pu.size() - 1;
+    double best_u = e.pu[0], best_d2 = HUGE_VAL;
+    for (size_t k = 0; k <= n; ++k) {
+        double d2 = P.SquareDistance(e.pp[k]);
+        if (d2 < best_d2) best_d2 = d2, best_u = e.pu[k];
+    }
+    std::vector<std::pair<double, size_t>> cand;
+    std::vector<double> foot(n);
+    for (size_t k = 0; k < n; ++k) {
+        double lb = segment_distance(P, e.pp[k], e.pp[k + 1], &foot[k]) - e.psag[k];
+        if (lb <= 0 || lb * lb < best_d2) cand.emplace_back(lb, k);
+    }
+    std::sort(cand.begin(), cand.end());
+    for (const auto &c : cand) {
+        if (c.first > 0 && c.first * c.first >= best_d2) break;
+        const size_t k = c.second;
+        const double a = e.pu[k], b = e.pu[k + 1];
+        polish(e, P, a, b, a + foot[k] * (b - a), &best_u, &best_d2);
     }
     *d2_out = best_d2;
     return best_u;
