@@ -30,6 +30,58 @@ static cad_face *open_face(const char *name)
     return f;
 }
 
+/* Projection of points anywhere around the face (far from the edge, near
+ * centres of curvature, beyond its ends): never farther than the closest
+ * of 20 000 points along the edge, each refined by golden-section search
+ * between its neighbours (the projection prunes chords by a bound, this
+ * search does not). */
+static void far_projection(const char *name, const cad_face *f, int e, double L)
+{
+    char what[256];
+    double bb[4] = {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL};
+    enum { NS = 20000 };
+    static double xs[NS + 1][2];
+    for (int i = 0; i <= NS; ++i) {
+        eval(f, e, L * i / NS, xs[i], NULL, NULL);
+        bb[0] = fmin(bb[0], xs[i][0]), bb[1] = fmin(bb[1], xs[i][1]);
+        bb[2] = fmax(bb[2], xs[i][0]), bb[3] = fmax(bb[3], xs[i][1]);
+    }
+    const double w = bb[2] - bb[0] + 0.1 * L, h = bb[3] - bb[1] + 0.1 * L;
+    unsigned long long r = 12345;
+    for (int k = 0; k < 12; ++k) {
+        double q[2];
+        for (int c = 0; c < 2; ++c) {
+            r = r * 6364136223846793005ULL + 1442695040888963407ULL;
+            double u = (double)(r >> 11) / 9007199254740992.0;
+            q[c] = c == 0 ? bb[0] - 0.05 * L + 2 * w * u - 0.5 * w : bb[1] - 0.05 * L + 2 * h * u - 0.5 * h;
+        }
+        int best = 0;
+        double bd = HUGE_VAL;
+        for (int i = 0; i <= NS; ++i) {
+            double d = hypot(xs[i][0] - q[0], xs[i][1] - q[1]);
+            if (d < bd) bd = d, best = i;
+        }
+        double a = L * (best > 0 ? best - 1 : 0) / NS, b = L * (best < NS ? best + 1 : NS) / NS;
+        for (int it = 0; it < 80; ++it) {
+            double m1 = b - 0.618033988749895 * (b - a), m2 = a + 0.618033988749895 * (b - a), p1[2],
+                   p2[2];
+            eval(f, e, m1, p1, NULL, NULL);
+            eval(f, e, m2, p2, NULL, NULL);
+            double d1 = hypot(p1[0] - q[0], p1[1] - q[1]), d2 = hypot(p2[0] - q[0], p2[1] - q[1]);
+            bd = fmin(bd, fmin(d1, d2));
+            if (d1 < d2) b = m2;
+            else a = m1;
+        }
+        double s, dist;
+        sq_error err;
+        sq_status st = cad_face_edge_project(f, e, q, &s, NULL, &dist, &err);
+        CHECK(st == SQ_OK, "%s edge %d project: %s", name, e, err.msg);
+        snprintf(what, sizeof what, "%s edge %d projection of (%g, %g): excess over the search",
+                 name, e, q[0], q[1]);
+        NEAR(what, fmax(0.0, dist - bd), 0.0, 1e-9 * L);
+    }
+}
+
 /* Generic checks valid for every face. */
 static void check_generic(const char *name, const cad_face *f)
 {
@@ -103,6 +155,7 @@ static void check_generic(const char *name, const cad_face *f)
                 snprintf(what, sizeof what, "%s edge %d tangent at the nearest point", name, e);
                 NEAR(what, hypot(tn[0] - t[0], tn[1] - t[1]), 0.0, 1e-9);
             }
+            far_projection(name, f, e, L);
         }
     }
     CHECK(ne == cad_face_num_edges(f), "%s: loops hold %d edges, face has %d", name, ne,
