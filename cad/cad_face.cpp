@@ -40,7 +40,6 @@
 #include <gp_Vec.hxx>
 
 #include <algorithm>
-#include <utility>
 #include <cmath>
 #include <memory>
 
@@ -642,7 +641,7 @@ static void polish(const Edge &e, const gp_Pnt &P, double a, double b, double u,
         if (!(dg > 0)) break;
         double un = std::min(b, std::max(a, u - g / dg));
         double dn = P.SquareDistance(e.curve->Value(un));
-        if (!(dn < d2) && un != u) break;
+        if (!(dn < d2)) break;
         double step = std::fabs(un - u);
         u = un, d2 = dn;
         if (d2 < *best_d2) *best_d2 = d2, *best_u = u;
@@ -660,18 +659,22 @@ static double closest_u(const Edge &e, const gp_Pnt &P, double *d2_out)
         double d2 = P.SquareDistance(e.pp[k]);
         if (d2 < best_d2) best_d2 = d2, best_u = e.pu[k];
     }
-    std::vector<std::pair<double, size_t>> cand;
-    std::vector<double> foot(n);
+    struct Chord {
+        double lb; // distance from the chord minus its sagitta bound
+        size_t k;
+        double t; // the foot on the chord
+        bool operator<(const Chord &o) const { return lb < o.lb; }
+    };
+    std::vector<Chord> cand;
     for (size_t k = 0; k < n; ++k) {
-        double lb = segment_distance(P, e.pp[k], e.pp[k + 1], &foot[k]) - e.psag[k];
-        if (lb <= 0 || lb * lb < best_d2) cand.emplace_back(lb, k);
+        double t, lb = segment_distance(P, e.pp[k], e.pp[k + 1], &t) - e.psag[k];
+        if (lb <= 0 || lb * lb < best_d2) cand.push_back({lb, k, t});
     }
     std::sort(cand.begin(), cand.end());
-    for (const auto &c : cand) {
-        if (c.first > 0 && c.first * c.first >= best_d2) break;
-        const size_t k = c.second;
-        const double a = e.pu[k], b = e.pu[k + 1];
-        polish(e, P, a, b, a + foot[k] * (b - a), &best_u, &best_d2);
+    for (const Chord &c : cand) {
+        if (c.lb > 0 && c.lb * c.lb >= best_d2) break;
+        const double a = e.pu[c.k], b = e.pu[c.k + 1];
+        polish(e, P, a, b, a + c.t * (b - a), &best_u, &best_d2);
     }
     *d2_out = best_d2;
     return best_u;

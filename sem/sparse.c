@@ -154,24 +154,32 @@ static sq_status not_assembling(const sem_sparse *a, const char *fn, sq_error *e
     return SQ_OK;
 }
 
-/* Index in A->x of the first row of block row bi in column c of block
- * column bj (bi >= bj), or -1 if that block is not in the pattern. */
-static long block_entry(const sem_sparse *a, long bi, long bj, long c)
+/* Where block (bi, bj), bi >= bj, is stored: 0 for the diagonal block, else
+ * its position p in brow (bptr[bj] < p < bptr[bj + 1]); -1 if it is not in
+ * the pattern. */
+static long block_slot(const sem_sparse *a, long bi, long bj)
 {
-    const sslong *Ap = a->A->p;
-    const int jj = (int)(c - bj * a->bs);
-    if (bi == bj) return (long)Ap[c] - jj; /* row bj bs of the diagonal block */
+    if (bi == bj) return 0;
     long lo = a->bptr[bj] + 1, hi = a->bptr[bj + 1] - 1;
     while (lo <= hi) {
         const long mid = (lo + hi) / 2;
-        if (a->brow[mid] == bi)
-            return (long)Ap[c] + (a->bs - jj) + (mid - a->bptr[bj] - 1) * (long)a->bs;
+        if (a->brow[mid] == bi) return mid;
         if (a->brow[mid] < bi)
             lo = mid + 1;
         else
             hi = mid - 1;
     }
     return -1;
+}
+
+/* Index in A->x of the block's first row in column c of block column bj
+ * (slot from block_slot, >= 0). */
+static long slot_entry(const sem_sparse *a, long bj, long slot, long c)
+{
+    const sslong *Ap = a->A->p;
+    const int jj = (int)(c - bj * a->bs);
+    if (slot == 0) return (long)Ap[c] - jj; /* row bj bs of the diagonal block */
+    return (long)Ap[c] + (a->bs - jj) + (slot - a->bptr[bj] - 1) * (long)a->bs;
 }
 
 sq_status sem_sparse_add(sem_sparse *a, long i, long j, double v, sq_error *err)
@@ -182,11 +190,11 @@ sq_status sem_sparse_add(sem_sparse *a, long i, long j, double v, sq_error *err)
                        a->n, a->n);
     if (i < j) return SQ_OK; /* upper triangle: the symmetric twin is added */
     if (a->nblocks) {
-        const long bi = i / a->bs, bj = j / a->bs, k = block_entry(a, bi, bj, j);
-        if (k < 0)
+        const long bi = i / a->bs, bj = j / a->bs, slot = block_slot(a, bi, bj);
+        if (slot < 0)
             return SQ_FAIL(err, SQ_ERR_USAGE,
                            "sparse_add: entry (%ld,%ld) outside the block pattern", i, j);
-        ((double *)a->A->x)[k + (i - bi * a->bs)] += v;
+        ((double *)a->A->x)[slot_entry(a, bj, slot, j) + (i - bi * a->bs)] += v;
         return SQ_OK;
     }
     cholmod_triplet *T = a->T;
@@ -215,15 +223,29 @@ sq_status sem_sparse_add_block(sem_sparse *a, long bi, long bj, const double *M,
     const long R = bi > bj ? bi : bj, C = bi > bj ? bj : bi;
     const int tr = bi < bj;
     double *x = a->A->x;
+    const long slot = block_slot(a, R, C);
+    if (slot < 0)
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "sparse_add_block: block (%ld,%ld) outside the block pattern", bi, bj);
     for (int c = 0; c < bs; ++c) {
-        const long k = block_entry(a, R, C, C * bs + c);
-        if (k < 0)
-            return SQ_FAIL(err, SQ_ERR_USAGE,
-                           "sparse_add_block: block (%ld,%ld) outside the block pattern", bi, bj);
+        const long k = slot_entry(a, C, slot, C * bs + c);
         for (int r = R == C ? c : 0; r < bs; ++r)
             x[k + r] += tr ? M[(size_t)c * bs + r] : M[(size_t)r * bs + c];
     }
     return SQ_OK;
+}
+
+/* CHOLMOD's analysis of A with the one ordering method given (perm for
+ * CHOLMOD_GIVEN), its choice of methods left as it was. */
+static cholmod_factor *analyze_by(sem_sparse *a, cholmod_sparse *A, sslong *perm, int ordering)
+{
+    const int nmethods = a->cc.nmethods, saved = a->cc.method[0].ordering;
+    a->cc.nmethods = 1;
+    a->cc.method[0].ordering = ordering;
+    cholmod_factor *L = cholmod_l_analyze_p(A, perm, NULL, 0, &a->cc);
+    a->cc.nmethods = nmethods;
+    a->cc.method[0].ordering = saved;
+    return L;
 }
 
 /* Fill-reducing ordering of a block pattern: nested dissection of the graph
@@ -239,12 +261,7 @@ static sq_status block_ordering(sem_sparse *a, sslong *perm, sq_error *err)
     if (!G) return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_factor: out of memory (block graph)");
     memcpy(G->p, a->bptr, sizeof(sslong) * (size_t)(nb + 1));
     memcpy(G->i, a->brow, sizeof(sslong) * (size_t)nbe);
-    const int nmethods = a->cc.nmethods, ordering = a->cc.method[0].ordering;
-    a->cc.nmethods = 1;
-    a->cc.method[0].ordering = CHOLMOD_NESDIS;
-    cholmod_factor *Lb = cholmod_l_analyze(G, &a->cc);
-    a->cc.nmethods = nmethods;
-    a->cc.method[0].ordering = ordering;
+    cholmod_factor *Lb = analyze_by(a, G, NULL, CHOLMOD_NESDIS);
     if (!Lb) Lb = cholmod_l_analyze(G, &a->cc);
     cholmod_l_free_sparse(&G, &a->cc);
     if (!Lb)
@@ -271,12 +288,7 @@ static sq_status analyze(sem_sparse *a, sq_error *err)
             free(perm);
             return st;
         }
-        const int nmethods = a->cc.nmethods, ordering = a->cc.method[0].ordering;
-        a->cc.nmethods = 1;
-        a->cc.method[0].ordering = CHOLMOD_GIVEN;
-        a->L = cholmod_l_analyze_p(a->A, perm, NULL, 0, &a->cc);
-        a->cc.nmethods = nmethods;
-        a->cc.method[0].ordering = ordering;
+        a->L = analyze_by(a, a->A, perm, CHOLMOD_GIVEN);
         free(perm);
     }
     if (!a->L)
