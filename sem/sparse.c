@@ -182,6 +182,34 @@ static long slot_entry(const sem_sparse *a, long bj, long slot, long c)
     return (long)Ap[c] + (a->bs - jj) + (slot - a->bptr[bj] - 1) * (long)a->bs;
 }
 
+sq_status sem_sparse_block_positions(const sem_sparse *a, long bi, long bj, long *pos,
+                                     sq_error *err)
+{
+    if (!a || !a->nblocks || !pos)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_block_positions: not a block matrix");
+    if (bi < 0 || bj < 0 || bi >= a->nblocks || bj >= a->nblocks)
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "sparse_block_positions: block (%ld,%ld) outside %ld x %ld", bi, bj,
+                       a->nblocks, a->nblocks);
+    const int bs = a->bs;
+    const long R = bi > bj ? bi : bj, C = bi > bj ? bj : bi, slot = block_slot(a, R, C);
+    if (slot < 0)
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "sparse_block_positions: block (%ld,%ld) outside the block pattern", bi, bj);
+    for (int r = 0; r < bs; ++r)
+        for (int c = 0; c < bs; ++c) {
+            /* the stored entry (row rr, column cc of block (R, C)) */
+            const int rr = bi >= bj ? r : c, cc = bi >= bj ? c : r;
+            pos[r * bs + c] = R == C && rr < cc ? -1 : slot_entry(a, C, slot, C * bs + cc) + rr;
+        }
+    return SQ_OK;
+}
+
+double *sem_sparse_values(sem_sparse *a)
+{
+    return a && a->nblocks && a->assembling ? a->A->x : NULL;
+}
+
 sq_status sem_sparse_add(sem_sparse *a, long i, long j, double v, sq_error *err)
 {
     SQ_TRY(not_assembling(a, "sparse_add", err));
@@ -344,11 +372,12 @@ sq_status sem_sparse_factor(sem_sparse *a, sq_error *err)
 
 sq_status sem_sparse_reset(sem_sparse *a, sq_error *err)
 {
-    if (!a || a->assembling || !a->L)
+    if (!a || !a->L)
         return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_reset: no factorization to start again from");
     if (a->nblocks) {
         memset(a->A->x, 0, sizeof(double) * a->A->nzmax);
     } else {
+        if (a->T) cholmod_l_free_triplet(&a->T, &a->cc);
         a->T = cholmod_l_allocate_triplet((size_t)a->n, (size_t)a->n, a->A->nzmax, -1, CHOLMOD_REAL,
                                           &a->cc);
         if (!a->T) return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_reset: out of memory");
@@ -369,6 +398,78 @@ sq_status sem_sparse_solve(sem_sparse *a, const double *b, double *x, sq_error *
     memcpy(x, X->x, sizeof(double) * (size_t)a->n);
     cholmod_l_free_dense(&X, &a->cc);
     return SQ_OK;
+}
+
+/* Preconditioned conjugate gradients (Hestenes & Stiefel 1952; Saad,
+ * Iterative Methods for Sparse Linear Systems, 2nd ed., Algorithm 9.1) on
+ * the values assembled so far, preconditioned by the last factorization:
+ * each iteration one product with A and one solve with L. */
+sq_status sem_sparse_pcg(sem_sparse *a, const double *b, double *x, double rtol, int maxit,
+                         int *iters, int *converged, sq_error *err)
+{
+    *iters = 0;
+    *converged = 0;
+    if (!a || !a->L || !a->assembling || !a->nblocks)
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "sparse_pcg: needs a block matrix being assembled after a factorization");
+    const size_t n = (size_t)a->n;
+    cholmod_dense *R = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, &a->cc),
+                  *P = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, &a->cc),
+                  *Q = cholmod_l_allocate_dense(n, 1, n, CHOLMOD_REAL, &a->cc), *Z = NULL, *Y = NULL,
+                  *E = NULL;
+    sq_status st = SQ_OK;
+    if (!R || !P || !Q) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_pcg: out of memory");
+    double *r = R ? R->x : NULL, *p = P ? P->x : NULL, *q = Q ? Q->x : NULL, bb = 0, rz = 0;
+    for (size_t i = 0; i < n && st == SQ_OK; ++i) {
+        x[i] = 0;
+        r[i] = b[i];
+        bb += b[i] * b[i];
+    }
+    double one[2] = {1, 0}, zero[2] = {0, 0};
+    for (int it = 0; st == SQ_OK; ++it) {
+        double rr = 0;
+        for (size_t i = 0; i < n; ++i)
+            rr += r[i] * r[i];
+        if (rr <= rtol * rtol * bb) {
+            *converged = 1;
+            break;
+        }
+        if (it == maxit) break;
+        if (!cholmod_l_solve2(CHOLMOD_A, a->L, R, NULL, &Z, NULL, &Y, &E, &a->cc)) {
+            st = SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_pcg: CHOLMOD solve failed (status %d)",
+                         a->cc.status);
+            break;
+        }
+        const double *z = Z->x, rz0 = rz;
+        rz = 0;
+        for (size_t i = 0; i < n; ++i)
+            rz += r[i] * z[i];
+        const double beta = it ? rz / rz0 : 0.0;
+        for (size_t i = 0; i < n; ++i)
+            p[i] = it ? z[i] + beta * p[i] : z[i];
+        if (!cholmod_l_sdmult(a->A, 0, one, zero, P, Q, &a->cc)) {
+            st = SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_pcg: CHOLMOD product failed (status %d)",
+                         a->cc.status);
+            break;
+        }
+        double pq = 0;
+        for (size_t i = 0; i < n; ++i)
+            pq += p[i] * q[i];
+        if (!(pq > 0)) break; /* not positive definite along p: not converged */
+        const double alpha = rz / pq;
+        for (size_t i = 0; i < n; ++i) {
+            x[i] += alpha * p[i];
+            r[i] -= alpha * q[i];
+        }
+        *iters = it + 1;
+    }
+    cholmod_l_free_dense(&R, &a->cc);
+    cholmod_l_free_dense(&P, &a->cc);
+    cholmod_l_free_dense(&Q, &a->cc);
+    cholmod_l_free_dense(&Z, &a->cc);
+    cholmod_l_free_dense(&Y, &a->cc);
+    cholmod_l_free_dense(&E, &a->cc);
+    return st;
 }
 
 long sem_sparse_size(const sem_sparse *a) { return a ? a->n : 0; }

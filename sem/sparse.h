@@ -39,17 +39,42 @@ sq_status sem_sparse_add(sem_sparse *a, long i, long j, double v, sq_error *err)
  * itself and its transpose, whichever of the two is stored. */
 sq_status sem_sparse_add_block(sem_sparse *a, long bi, long bj, const double *M, sq_error *err);
 
+/* Where the entries of block (bi, bj) of a matrix made with
+ * sem_sparse_create_blocks are summed: pos[r bs + c] is the index, in the
+ * array of sem_sparse_values, of the entry that M[r bs + c] of
+ * sem_sparse_add_block goes to, or -1 where that entry is not read (the
+ * upper triangle of a diagonal block).  For assembling the same pattern
+ * many times (Newton iterations): the positions looked up once, then
+ * values[pos[k]] += M[k]. */
+sq_status sem_sparse_block_positions(const sem_sparse *a, long bi, long bj, long *pos,
+                                     sq_error *err);
+
+/* The values of a block matrix being assembled, NULL otherwise. */
+double *sem_sparse_values(sem_sparse *a);
+
 /* Compress and factor (Cholesky, CHOLMOD's supernodal/simplicial choice).
  * SQ_ERR_INTERNAL if A is not positive definite. */
 sq_status sem_sparse_factor(sem_sparse *a, sq_error *err);
 
-/* After sem_sparse_factor: forget the values and start assembling anew;
- * the next sem_sparse_factor keeps the symbolic analysis if the pattern
- * (after duplicates are summed) has not changed. */
+/* After a sem_sparse_factor: forget the values and start assembling anew
+ * (also in the middle of an assembly); the next sem_sparse_factor keeps
+ * the symbolic analysis if the pattern (after duplicates are summed) has
+ * not changed. */
 sq_status sem_sparse_reset(sem_sparse *a, sq_error *err);
 
 /* Solve A x = b (b and x of length n, may alias) with the factorization. */
 sq_status sem_sparse_solve(sem_sparse *a, const double *b, double *x, sq_error *err);
+
+/* Solve A x = b, A the values of a block matrix assembled since
+ * sem_sparse_reset (all of them added), by conjugate gradients
+ * preconditioned with the last factorization (of an earlier matrix of the
+ * same pattern): cheaper than factoring anew while A has changed little
+ * (Newton iterations).  Stops once |b - A x| <= rtol |b| (*converged = 1)
+ * or after maxit iterations (*converged = 0, x the last iterate);
+ * *iters the iterations done.  The assembly stays open: sem_sparse_factor
+ * may follow. */
+sq_status sem_sparse_pcg(sem_sparse *a, const double *b, double *x, double rtol, int maxit,
+                         int *iters, int *converged, sq_error *err);
 
 long sem_sparse_size(const sem_sparse *a);
 

@@ -23,7 +23,6 @@ typedef struct {
     long ndofs;               /* per component */
     sem_field *uv;            /* two components: u, v */
     sem_field_evaluator *ev;  /* on uv */
-    double l2_u, l2_v;        /* L2 norms over the face */
 } sq_guiding_field;
 
 /* The method --method auto picks: CG when every corner angle is a multiple
@@ -39,6 +38,10 @@ sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
                                  const sem_tri_mesh *mesh, int order, sq_method method,
                                  sq_guiding_field *out, sq_error *err);
 void sq_guiding_field_free(sq_guiding_field *g); /* frees, zeroes the struct */
+
+/* The L2 norms of u and v over the face (reports; not needed to mesh). */
+sq_status sq_guiding_field_norms(const sq_guiding_field *g, double *l2_u, double *l2_v,
+                                 sq_error *err);
 
 /* (u, v) and their physical gradients (grad[4] = {u_x, u_y, v_x, v_y}, may
  * be NULL) at a physical point; *elem is a hint in, the element out.

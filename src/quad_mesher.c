@@ -553,7 +553,7 @@ static sq_status smooth(const cad_face *face, const sq_face_info *info, vmesh *v
  * singular points free the relaxation gives up once it folds a curved
  * boundary quad (*folded): the attempt with them held follows. */
 static sq_status relax(const cad_face *face, const sq_face_info *info, vmesh *v, const int *keep,
-                       int move_singular, int *folded, sq_error *err)
+                       int move_singular, sq_relax_work **work, int *folded, sq_error *err)
 {
     int *deg = calloc((size_t)v->nv + 1, sizeof(int)), *bnd = calloc((size_t)v->nv + 1, sizeof(int));
     int *fixed = calloc((size_t)v->nv + 1, sizeof(int));
@@ -573,7 +573,7 @@ static sq_status relax(const cad_face *face, const sq_face_info *info, vmesh *v,
         fixed[i] = (keep && keep[i]) || (!bnd[i] && deg[i] != 4 && !move_singular) ||
                    (bnd[i] && at_face_corner(info, &v->xy[2 * i]));
     sq_relax_mesh rm = {v->nv, v->nq, v->xy, v->quad, v->side_tag, fixed, move_singular, 0};
-    sq_status st = sq_quad_relax(face, &rm, err);
+    sq_status st = sq_quad_relax(face, &rm, work, err);
     *folded = rm.folded;
     free(deg);
     free(bnd);
@@ -1010,11 +1010,12 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
     if (st == SQ_OK && !smoothed) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK) memcpy(smoothed, v.xy, sizeof(double) * 2 * (size_t)v.nv);
     double best_sj = -HUGE_VAL;
+    sq_relax_work *work = NULL; /* the first relaxation's Hessian, for the second */
     for (int attempt = 0; attempt < 3 && st == SQ_OK; attempt++) {
         sq_quad_mesh *m = NULL;
         memcpy(v.xy, smoothed, sizeof(double) * 2 * (size_t)v.nv);
         int folded = 0;
-        if (attempt < 2) st = relax(face, info, &v, keep, attempt == 0, &folded, err);
+        if (attempt < 2) st = relax(face, info, &v, keep, attempt == 0, &work, &folded, err);
         if (folded) continue;
         if (st == SQ_OK && opt->nbl > 0) st = bl_march(face, opt, &v, err);
         if (st == SQ_OK) st = raise_order(face, &v, Q, opt->nodes, opt, &m, err);
@@ -1029,6 +1030,7 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
         sq_quad_mesh_free(&m);
         if (best_sj >= SJ_ACCEPT) break;
     }
+    sq_relax_work_free(&work);
     if (st != SQ_OK) sq_quad_mesh_free(out);
     free(smoothed);
     free(keep);

@@ -11,7 +11,8 @@
 #define MAX_HALVINGS 30
 #define MAX_DOUBLINGS 4
 #define CONVERGED 1e-9
-#define STALE_MOVE 1e-3
+#define PCG_RTOL 5e-2
+#define PCG_MAXIT 6
 #define DOUBLE_RHO 1.1
 #define WORST_ETA 0.55
 #define WORST_SWEEPS 50
@@ -19,9 +20,13 @@
 #define MAX_STRETCH 5.0
 #define TAU_ETA 0.9
 
-/* How each vertex moves. */
-typedef struct {
+/* How each vertex moves; kept from one relaxation of a mesh to the next
+ * (sq_relax_work). */
+struct sq_relax_work {
+    int nv, nq;
+    char *fixed0; /* nv: the caller's fixed vertices when this was made */
     int *dof;     /* nv: its two unknowns 2b, 2b + 1 (b its block), -1 when fixed */
+    int *var;     /* nv: dof, or -1 where this relaxation holds the vertex */
     int *edge;    /* nv: CAD edge a sliding vertex moves on, else -1 */
     double *s;    /* nv: arc length of a sliding vertex */
     double *len;  /* nv: length of that edge, negative when the edge is open */
@@ -31,11 +36,21 @@ typedef struct {
     int *around;
     long *bptr, *brow; /* the Hessian's block pattern (sparse.h): moving
                         * vertices that share a quad */
-} relax_work;
+    long *pos;         /* 24 per quad corner: where the blocks of its vertex
+                        * pairs (0,0) (0,1) (0,2) (1,1) (1,2) (2,2) are summed
+                        * in the Hessian's values (sem_sparse_block_positions) */
+    sem_sparse *A;     /* the Hessian, its analysis and last factorization */
+    int factored;      /* A has been factored */
+};
+typedef struct sq_relax_work relax_work;
 
-static void work_free(relax_work *w)
+void sq_relax_work_free(sq_relax_work **pw)
 {
+    if (!pw || !*pw) return;
+    relax_work *w = *pw;
+    free(w->fixed0);
     free(w->dof);
+    free(w->var);
     free(w->edge);
     free(w->s);
     free(w->len);
@@ -44,6 +59,10 @@ static void work_free(relax_work *w)
     free(w->around);
     free(w->bptr);
     free(w->brow);
+    free(w->pos);
+    sem_sparse_free(&w->A);
+    free(w);
+    *pw = NULL;
 }
 
 static int cmp_long(const void *a, const void *b)
@@ -81,12 +100,46 @@ static sq_status block_pattern(const sq_relax_mesh *m, relax_work *w, sq_error *
     return SQ_OK;
 }
 
+/* Corner k of quad q: its vertex c and the next (a) and previous (b). */
+static void corner_vertices(const sq_relax_mesh *m, int q, int k, int v[3])
+{
+    v[0] = m->quad[4 * q + k];
+    v[1] = m->quad[4 * q + (k + 1) % 4];
+    v[2] = m->quad[4 * q + (k + 3) % 4];
+}
+
+/* The Hessian, its pattern set, and where each corner's blocks go. */
+static sq_status create_hessian(const sq_relax_mesh *m, relax_work *w, sq_error *err)
+{
+    SQ_TRY(sem_sparse_create_blocks(w->ndof / 2, 2, w->bptr, w->brow, &w->A, err));
+    w->pos = malloc(sizeof(long) * (96 * (size_t)m->nq + 1));
+    if (!w->pos) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int q = 0; q < m->nq; q++)
+        for (int k = 0; k < 4; k++) {
+            int v[3];
+            corner_vertices(m, q, k, v);
+            long *pos = &w->pos[24 * (4 * q + k)];
+            for (int r = 0; r < 3; r++)
+                for (int t = r; t < 3; t++, pos += 4) {
+                    pos[0] = pos[1] = pos[2] = pos[3] = -1;
+                    if (w->dof[v[r]] >= 0 && w->dof[v[t]] >= 0)
+                        SQ_TRY(sem_sparse_block_positions(w->A, w->dof[v[r]] / 2, w->dof[v[t]] / 2,
+                                                          pos, err));
+                }
+        }
+    return SQ_OK;
+}
+
 /* Which vertices move and how: interior free vertices in the plane (two
  * unknowns), boundary vertices whose two boundary sides lie on one CAD edge
  * along it (one unknown, the arc length); every other vertex is fixed. */
 static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_work *w, sq_error *err)
 {
     int *nb = calloc((size_t)m->nv + 1, sizeof(int));
+    w->nv = m->nv;
+    w->nq = m->nq;
+    w->fixed0 = malloc((size_t)m->nv + 1);
+    w->var = malloc(sizeof(int) * ((size_t)m->nv + 1));
     w->dof = malloc(sizeof(int) * ((size_t)m->nv + 1));
     w->edge = malloc(sizeof(int) * ((size_t)m->nv + 1));
     w->s = calloc((size_t)m->nv + 1, sizeof(double));
@@ -94,12 +147,15 @@ static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_wor
     w->tan = calloc(2 * (size_t)m->nv + 1, sizeof(double));
     w->start = calloc((size_t)m->nv + 2, sizeof(int));
     w->around = malloc(sizeof(int) * (4 * (size_t)m->nq + 1));
-    if (!nb || !w->dof || !w->edge || !w->s || !w->len || !w->tan || !w->start || !w->around) {
+    if (!nb || !w->fixed0 || !w->var || !w->dof || !w->edge || !w->s || !w->len || !w->tan ||
+        !w->start || !w->around) {
         free(nb);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
-    for (int i = 0; i < m->nv; i++)
+    for (int i = 0; i < m->nv; i++) {
         w->edge[i] = -1;
+        w->fixed0[i] = m->fixed[i] != 0;
+    }
     for (int q = 0; q < m->nq; q++)
         for (int k = 0; k < 4; k++)
             w->start[m->quad[4 * q + k] + 2]++;
@@ -145,15 +201,27 @@ static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_wor
         w->ndof += 2;
         if (nb[i] == 0) continue;
         double a[2], b[2], L = cad_face_edge_length(face, w->edge[i]);
-        st = cad_face_edge_project(face, w->edge[i], &m->xy[2 * i], &w->s[i], NULL, NULL, err);
-        if (st == SQ_OK) st = cad_face_edge_eval(face, w->edge[i], 0.0, a, NULL, NULL, err);
+        st = cad_face_edge_eval(face, w->edge[i], 0.0, a, NULL, NULL, err);
         if (st == SQ_OK) st = cad_face_edge_eval(face, w->edge[i], L, b, NULL, NULL, err);
         w->len[i] = hypot(a[0] - b[0], a[1] - b[1]) < 1e-9 * L ? L : -L;
     }
     free(held);
     free(nb);
     if (st == SQ_OK) st = block_pattern(m, w, err);
+    if (st == SQ_OK && w->ndof > 0) st = create_hessian(m, w, err);
     return st;
+}
+
+/* This relaxation: the vertices that move (a vertex the caller now fixes
+ * keeps its unknowns, held at zero) and where the sliding ones are. */
+static sq_status begin(const cad_face *face, const sq_relax_mesh *m, relax_work *w, sq_error *err)
+{
+    for (int i = 0; i < m->nv; i++) {
+        w->var[i] = m->fixed[i] ? -1 : w->dof[i];
+        if (w->dof[i] >= 0 && w->edge[i] >= 0)
+            SQ_TRY(cad_face_edge_project(face, w->edge[i], &m->xy[2 * i], &w->s[i], NULL, NULL, err));
+    }
+    return SQ_OK;
 }
 
 /* The point of sliding vertex i's edge at arc length s (wrapped on a
@@ -167,14 +235,6 @@ static sq_status on_edge(const cad_face *face, const relax_work *w, int i, doubl
     else
         *s = fmin(fmax(*s, 0.0), L);
     return cad_face_edge_eval(face, w->edge[i], *s, x, t, NULL, err);
-}
-
-/* Corner k of quad q: its vertex c and the next (a) and previous (b). */
-static void corner_vertices(const sq_relax_mesh *m, int q, int k, int v[3])
-{
-    v[0] = m->quad[4 * q + k];
-    v[1] = m->quad[4 * q + (k + 1) % 4];
-    v[2] = m->quad[4 * q + (k + 3) % 4];
 }
 
 /* Winslow energy of one corner with edges e = (a - c, b - c):
@@ -258,47 +318,61 @@ static void corner_derivatives(const double e[4], double g[4], double H[16])
             H[4 * i + j] = 8.0 * a / s2 * (PM[4 * i + j] - wh[i] * wh[j]) + lp * z[i] * z[j];
 }
 
-/* d e / d z_p for vertex p in role r (0: c, 1: a, 2: b): a 4 x 2 matrix,
- * its second column zero for a sliding vertex; 0 when p is fixed. */
-static int vertex_jacobian(const relax_work *w, int p, int role, double J[4][2])
+/* How vertex p moves: dz = T du with u its unknowns, T the identity for a
+ * free vertex, (tangent, 0) for a sliding one; 0 when it does not move. */
+static int vertex_frame(const relax_work *w, int p, double T[4])
 {
-    if (w->dof[p] < 0) return 0;
-    double T[2][2] = {{1.0, 0.0}, {0.0, 1.0}};
-    if (w->edge[p] >= 0) {
-        T[0][0] = w->tan[2 * p];
-        T[1][0] = w->tan[2 * p + 1];
-        T[1][1] = 0.0;
-    }
-    /* e1 = a - c, e2 = b - c */
-    double s1 = role == 0   ? -1.0
-                : role == 1 ? 1.0
-                            : 0.0,
-           s2 = role == 0   ? -1.0
-                : role == 2 ? 1.0
-                            : 0.0;
-    for (int j = 0; j < 2; j++) {
-        J[0][j] = s1 * T[0][j];
-        J[1][j] = s1 * T[1][j];
-        J[2][j] = s2 * T[0][j];
-        J[3][j] = s2 * T[1][j];
-    }
+    if (w->var[p] < 0) return 0;
+    int slides = w->edge[p] >= 0;
+    T[0] = slides ? w->tan[2 * p] : 1.0;
+    T[1] = 0.0;
+    T[2] = slides ? w->tan[2 * p + 1] : 0.0;
+    T[3] = slides ? 0.0 : 1.0;
     return 1;
 }
 
+/* The Hessian blocks of one corner between its vertices c, a, b (roles 0,
+ * 1, 2) in the plane, from the 2 x 2 blocks Hij of He (e = (e1, e2) with
+ * e1 = a - c, e2 = b - c): aa = H11, ab = H12, bb = H22, ca = -(H11 + H21),
+ * cb = -(H12 + H22), cc = H11 + H12 + H21 + H22; in the order (c,c) (c,a)
+ * (c,b) (a,a) (a,b) (b,b), each row-major. */
+static void corner_blocks(const double He[16], double M[6][4])
+{
+    double H[2][2][4];
+    for (int i = 0; i < 2; i++)
+        for (int j = 0; j < 2; j++)
+            for (int r = 0; r < 2; r++)
+                for (int c = 0; c < 2; c++)
+                    H[i][j][2 * r + c] = He[4 * (2 * i + r) + 2 * j + c];
+    for (int k = 0; k < 4; k++) {
+        M[3][k] = H[0][0][k];
+        M[4][k] = H[0][1][k];
+        M[5][k] = H[1][1][k];
+        M[1][k] = -(H[0][0][k] + H[1][0][k]);
+        M[2][k] = -(H[0][1][k] + H[1][1][k]);
+        M[0][k] = H[0][0][k] + H[0][1][k] + H[1][0][k] + H[1][1][k];
+    }
+}
+
 /* The Newton direction d: (H + shift) d = -g, H the sum of the corners'
- * projected Hessians, assembled in place in *A (created on the first call,
- * its symbolic analysis kept for the next ones) when fresh, else the last
- * factorization of H; *gd = g . d. */
-static sq_status newton_direction(const sq_relax_mesh *m, const relax_work *w, int fresh,
-                                  sem_sparse **A, double *d, double *gd, sq_error *err)
+ * projected Hessians, assembled in place in w->A.  Solved by conjugate
+ * gradients preconditioned with the last factorization (made at an earlier
+ * step, or by the relaxation before), to PCG_RTOL: a few iterations while
+ * the vertices move little, much cheaper than factoring; by factoring H
+ * when fresh, at the first step of all, or when PCG_MAXIT iterations do
+ * not do: *factored.  *gd = g . d. */
+static sq_status newton_direction(const sq_relax_mesh *m, relax_work *w, int fresh, double *d,
+                                  double *gd, int *factored, sq_error *err)
 {
     double *g = calloc((size_t)w->ndof + 1, sizeof(double)),
            *gx = calloc(2 * (size_t)m->nv + 1, sizeof(double)),
            *diag = calloc((size_t)w->ndof + 1, sizeof(double));
     sq_status st = !g || !gx || !diag ? SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory")
-                   : !fresh           ? SQ_OK
-                   : *A               ? sem_sparse_reset(*A, err)
-                                      : sem_sparse_create_blocks(w->ndof / 2, 2, w->bptr, w->brow, A, err);
+                   : w->factored      ? sem_sparse_reset(w->A, err)
+                                      : SQ_OK; /* the first assembly */
+    sem_sparse *A = w->A;
+    fresh |= !w->factored;
+    double *x = st == SQ_OK ? sem_sparse_values(A) : NULL;
     for (int q = 0; q < m->nq && st == SQ_OK; q++)
         for (int k = 0; k < 4 && st == SQ_OK; k++) {
             int v[3];
@@ -314,32 +388,38 @@ static sq_status newton_direction(const sq_relax_mesh *m, const relax_work *w, i
             gx[2 * v[1] + 1] += ge[1];
             gx[2 * v[2]] += ge[2];
             gx[2 * v[2] + 1] += ge[3];
-            double J[3][4][2];
+            double T[3][4], M[6][4];
             int moves[3];
             for (int r = 0; r < 3; r++)
-                moves[r] = vertex_jacobian(w, v[r], r, J[r]);
-            for (int r = 0; r < 3 && fresh; r++)
-                for (int t = r; t < 3 && st == SQ_OK; t++) {
+                moves[r] = vertex_frame(w, v[r], T[r]);
+            corner_blocks(He, M);
+            const long *pos = &w->pos[24 * (4 * q + k)];
+            for (int r = 0, pr = 0; r < 3; r++)
+                for (int t = r; t < 3; t++, pr++, pos += 4) {
                     if (!moves[r] || !moves[t]) continue;
-                    double K[4], HJ[4][2];
-                    for (int x = 0; x < 4; x++)
-                        for (int j = 0; j < 2; j++)
-                            HJ[x][j] = He[4 * x] * J[t][0][j] + He[4 * x + 1] * J[t][1][j] +
-                                       He[4 * x + 2] * J[t][2][j] + He[4 * x + 3] * J[t][3][j];
-                    for (int i = 0; i < 2; i++)
-                        for (int j = 0; j < 2; j++)
-                            K[2 * i + j] = J[r][0][i] * HJ[0][j] + J[r][1][i] * HJ[1][j] +
-                                           J[r][2][i] * HJ[2][j] + J[r][3][i] * HJ[3][j];
+                    /* K = T_r^T M T_t */
+                    const double *B = M[pr], *R = T[r], *C = T[t];
+                    double MT[4] = {B[0] * C[0] + B[1] * C[2], B[0] * C[1] + B[1] * C[3],
+                                    B[2] * C[0] + B[3] * C[2], B[2] * C[1] + B[3] * C[3]};
+                    double K[4] = {R[0] * MT[0] + R[2] * MT[2], R[0] * MT[1] + R[2] * MT[3],
+                                   R[1] * MT[0] + R[3] * MT[2], R[1] * MT[1] + R[3] * MT[3]};
                     if (r == t) {
                         diag[w->dof[v[r]]] += K[0];
                         diag[w->dof[v[r]] + 1] += K[3];
                     }
-                    st = sem_sparse_add_block(*A, w->dof[v[r]] / 2, w->dof[v[t]] / 2, K, err);
+                    for (int e = 0; e < 4; e++)
+                        if (pos[e] >= 0) x[pos[e]] += K[e];
                 }
         }
     for (int i = 0; i < m->nv && st == SQ_OK; i++) {
         int k = w->dof[i];
         if (k < 0) continue;
+        if (w->var[i] < 0) {
+            /* held this time: unit diagonal, no coupling, no right-hand side */
+            st = sem_sparse_add(A, k, k, 1.0, err);
+            if (st == SQ_OK) st = sem_sparse_add(A, k + 1, k + 1, 1.0, err);
+            continue;
+        }
         const double *t = &w->tan[2 * i], *gi = &gx[2 * i];
         if (w->edge[i] < 0) {
             g[k] = gi[0];
@@ -349,16 +429,21 @@ static sq_status newton_direction(const sq_relax_mesh *m, const relax_work *w, i
         g[k] = t[0] * gi[0] + t[1] * gi[1];
         /* the pinned second unknown: a unit diagonal, no coupling, no
          * right-hand side */
-        if (fresh) st = sem_sparse_add(*A, k + 1, k + 1, 1.0, err);
+        st = sem_sparse_add(A, k + 1, k + 1, 1.0, err);
     }
     /* a small shift keeps the system definite where a projected Hessian
      * lost rank */
-    for (int i = 0; i < w->ndof && st == SQ_OK && fresh; i++)
-        st = sem_sparse_add(*A, i, i, 1e-8 * diag[i] + 1e-300, err);
-    if (st == SQ_OK && fresh) st = sem_sparse_factor(*A, err);
+    for (int i = 0; i < w->ndof && st == SQ_OK; i++)
+        st = sem_sparse_add(A, i, i, 1e-8 * diag[i] + 1e-300, err);
     for (int i = 0; i < w->ndof; i++)
         g[i] = -g[i];
-    if (st == SQ_OK) st = sem_sparse_solve(*A, g, d, err);
+    int iters = 0, converged = 0;
+    if (st == SQ_OK && !fresh)
+        st = sem_sparse_pcg(A, g, d, PCG_RTOL, PCG_MAXIT, &iters, &converged, err);
+    *factored = !converged;
+    if (st == SQ_OK && !converged) st = sem_sparse_factor(A, err);
+    w->factored |= st == SQ_OK && !converged;
+    if (st == SQ_OK && !converged) st = sem_sparse_solve(A, g, d, err);
     *gd = 0.0;
     for (int i = 0; i < w->ndof; i++)
         *gd -= g[i] * d[i];
@@ -373,7 +458,7 @@ static sq_status place(const cad_face *face, const sq_relax_mesh *m, relax_work 
                        const double *s0, const double *d, double t, sq_error *err)
 {
     for (int i = 0; i < m->nv; i++) {
-        int k = w->dof[i];
+        int k = w->var[i];
         if (k < 0) continue;
         if (w->edge[i] >= 0) {
             w->s[i] = s0[i] + t * d[k];
@@ -450,7 +535,7 @@ static sq_status compass(const cad_face *face, const sq_relax_mesh *m, relax_wor
     char *active = malloc((size_t)m->nv + 1);
     if (!active) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     for (int i = 0; i < m->nv; i++)
-        active[i] = w->dof[i] >= 0;
+        active[i] = w->var[i] >= 0;
     sq_status st = SQ_OK;
     for (int sweep = 0; sweep < WORST_SWEEPS && st == SQ_OK; sweep++) {
         int moved = 0;
@@ -484,7 +569,7 @@ static sq_status compass(const cad_face *face, const sq_relax_mesh *m, relax_wor
                     for (int t = w->start[i]; t < w->start[i + 1]; t++)
                         for (int k = 0; k < 4; k++) {
                             int v = m->quad[4 * w->around[t] + k];
-                            active[v] = w->dof[v] >= 0;
+                            active[v] = w->var[v] >= 0;
                         }
                     break;
                 }
@@ -546,16 +631,34 @@ static sq_status boundary_folds(const cad_face *face, const sq_relax_mesh *m, co
     return SQ_OK;
 }
 
-sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
+/* Does the kept work fit this relaxation: the same mesh, nothing free
+ * that was fixed when it was made. */
+static int work_fits(const relax_work *w, const sq_relax_mesh *m)
 {
-    relax_work w = {0};
-    sq_status st = prepare(face, m, &w, err);
+    if (w->nv != m->nv || w->nq != m->nq) return 0;
+    for (int i = 0; i < m->nv; i++)
+        if (w->fixed0[i] && !m->fixed[i]) return 0;
+    return 1;
+}
+
+sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **keep, sq_error *err)
+{
+    relax_work *w = keep ? *keep : NULL;
+    if (w && !work_fits(w, m)) sq_relax_work_free(keep);
+    w = keep ? *keep : NULL;
+    sq_status st = SQ_OK;
+    if (!w) {
+        w = calloc(1, sizeof *w);
+        st = w ? prepare(face, m, w, err) : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        if (st != SQ_OK) sq_relax_work_free(&w);
+        if (keep) *keep = w;
+    }
+    if (st == SQ_OK) st = begin(face, m, w, err);
     double *d = NULL, *p = NULL, *s0 = NULL, *held = NULL;
     char *was = NULL;
-    sem_sparse *A = NULL;
     m->folded = 0;
     if (st == SQ_OK) {
-        d = malloc(sizeof(double) * ((size_t)w.ndof + 1));
+        d = malloc(sizeof(double) * ((size_t)w->ndof + 1));
         p = malloc(sizeof(double) * 2 * ((size_t)m->nv + 1));
         s0 = malloc(sizeof(double) * ((size_t)m->nv + 1));
         held = malloc(sizeof(double) * 8 * ((size_t)m->nq + 1));
@@ -573,28 +676,31 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
             hi[c] = fmax(hi[c], m->xy[2 * i + c]);
         }
     const double extent = hypot(hi[0] - lo[0], hi[1] - lo[1]);
-    if (st == SQ_OK && m->stop_on_fold) st = boundary_folds(face, m, &w, held, was, 1, &m->folded, err);
-    int fresh = 1;
-    for (int it = 0; it < MAX_NEWTON && st == SQ_OK && w.ndof > 0 && E < HUGE_VAL; it++) {
+    if (st == SQ_OK && m->stop_on_fold) st = boundary_folds(face, m, w, held, was, 1, &m->folded, err);
+    int fresh = 0;
+    for (int it = 0; it < MAX_NEWTON && st == SQ_OK && w->ndof > 0 && E < HUGE_VAL; it++) {
         for (int i = 0; i < m->nv && st == SQ_OK; i++)
-            if (w.dof[i] >= 0 && w.edge[i] >= 0)
-                st = on_edge(face, &w, i, &w.s[i], &m->xy[2 * i], &w.tan[2 * i], err);
+            if (w->var[i] >= 0 && w->edge[i] >= 0)
+                st = on_edge(face, w, i, &w->s[i], &m->xy[2 * i], &w->tan[2 * i], err);
         double gd = 0.0;
-        if (st == SQ_OK) st = newton_direction(m, &w, fresh, &A, d, &gd, err);
+        int factored = 0;
+        if (st == SQ_OK) st = newton_direction(m, w, fresh, d, &gd, &factored, err);
         if (st != SQ_OK) break;
+        fresh = 0;
         memcpy(p, m->xy, sizeof(double) * 2 * (size_t)m->nv);
-        memcpy(s0, w.s, sizeof(double) * (size_t)m->nv);
+        memcpy(s0, w->s, sizeof(double) * (size_t)m->nv);
         double t = 1.0, E1 = HUGE_VAL;
         int h = 0;
         for (; h < MAX_HALVINGS && st == SQ_OK; h++, t *= 0.5) {
-            st = place(face, m, &w, p, s0, d, t, err);
+            st = place(face, m, w, p, s0, d, t, err);
             if (st == SQ_OK && (E1 = energy(m)) < E) break;
         }
-        /* no decrease left: converged, or a stale direction, retried fresh */
+        /* no decrease left: converged, or an inexact direction, retried
+         * with a factorization */
         if (st != SQ_OK || h == MAX_HALVINGS) {
             memcpy(m->xy, p, sizeof(double) * 2 * (size_t)m->nv);
-            memcpy(w.s, s0, sizeof(double) * (size_t)m->nv);
-            if (st == SQ_OK && !fresh) {
+            memcpy(w->s, s0, sizeof(double) * (size_t)m->nv);
+            if (st == SQ_OK && !factored) {
                 fresh = 1;
                 continue;
             }
@@ -606,50 +712,41 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err)
          * the curvature where it clamped negative eigenvalues): doubled
          * while the energy keeps decreasing.  From DOUBLE_RHO = 1.1, not
          * only for much larger ratios: naca0012's first steps have ratios
-         * 1.2-1.3 and moved 0.3 % of the extent each, 14 factorizations in
-         * its two relaxations, 10 when doubled (the same mesh) */
+         * 1.2-1.3 and moved 0.3 % of the extent each */
         if (h == 0 && rho > DOUBLE_RHO) {
             double tx = 1.0;
             for (int x = 0; x < MAX_DOUBLINGS && st == SQ_OK; x++, tx *= 2.0) {
-                st = place(face, m, &w, p, s0, d, 2.0 * tx, err);
+                st = place(face, m, w, p, s0, d, 2.0 * tx, err);
                 double E2 = st == SQ_OK ? energy(m) : HUGE_VAL;
                 if (!(E2 < E1)) break;
                 E1 = E2;
             }
-            if (st == SQ_OK) st = place(face, m, &w, p, s0, d, tx, err);
+            if (st == SQ_OK) st = place(face, m, w, p, s0, d, tx, err);
         }
         double moved = 0.0;
         for (int i = 0; i < m->nv; i++)
             moved =
                 fmax(moved, fabs(m->xy[2 * i] - p[2 * i]) + fabs(m->xy[2 * i + 1] - p[2 * i + 1]));
-        /* a stale step that decreased the energy about as its model
-         * predicted */
-        int good = h == 0 && rho > 0.5 && rho < 1.5;
-        /* converged: a fresh or good step moved no vertex by more than
-         * CONVERGED of the mesh's extent.  Tight, as the compass search
-         * after this decides on small differences of its quality measure:
-         * stopped at 1e-6 of the extent, two paths to the same optimum
-         * ended in compass results 4e-4 apart in mean eta (triangle.step) */
+        /* converged: a step moved no vertex by more than CONVERGED of the
+         * mesh's extent.  Tight, as the compass search after this decides
+         * on small differences of its quality measure: stopped at 1e-6 of
+         * the extent, two paths to the same optimum ended in compass
+         * results 4e-4 apart in mean eta (triangle.step) */
         int done = moved < CONVERGED * extent || E - E1 < 1e-15 * E;
         E = E1;
         /* a fold that the relaxation made is not undone by its later steps
-         * (naca0012 with its singular points free: from the 6th step on) */
+         * (naca0012 with its singular points free: from the 3rd step on) */
         if (m->stop_on_fold && st == SQ_OK)
-            st = boundary_folds(face, m, &w, held, was, 0, &m->folded, err);
-        if (m->folded || (done && (fresh || good))) break;
-        /* the Hessian factored afresh for every step until they become
-         * small (the last, linearly converging ones: by about 0.3 each),
-         * then the last factorization reused as long as its steps are good */
-        fresh = fresh ? !(h == 0 && moved < STALE_MOVE * extent) : !good;
+            st = boundary_folds(face, m, w, held, was, 0, &m->folded, err);
+        if (m->folded || done) break;
     }
     for (int phase = 0; phase < 2 && st == SQ_OK && !m->folded; phase++)
-        st = compass(face, m, &w, phase, err);
-    sem_sparse_free(&A);
+        st = compass(face, m, w, phase, err);
+    if (!keep) sq_relax_work_free(&w);
     free(held);
     free(was);
     free(d);
     free(p);
     free(s0);
-    work_free(&w);
     return st;
 }

@@ -13,9 +13,10 @@
  * meet the boundary orthogonally — the natural boundary condition of the
  * sliding vertices.  Projected Newton: each step solves with the sum of
  * the corners' Hessians made positive semi-definite (closed form), the
- * boundary vertices moving along their tangent (one sparse SPD solve,
- * CHOLMOD, its symbolic analysis kept; the last steps reuse the last
- * factorization), then projects them back onto the curve; a compass search
+ * boundary vertices moving along their tangent (one sparse SPD system:
+ * conjugate gradients preconditioned by an earlier step's CHOLMOD
+ * factorization, factored anew when they do not converge in a few
+ * iterations), then projects them back onto the curve; a compass search
  * on the worst quads follows.
  *
  * The caller fixes what must not move (singular points, face corners,
@@ -43,6 +44,17 @@ typedef struct {
     int folded;
 } sq_relax_mesh;
 
-sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_error *err);
+/* What one relaxation prepares (unknowns, the Hessian's pattern, its
+ * analysis and last factorization) for the next relaxation of the same
+ * mesh, opaque. */
+typedef struct sq_relax_work sq_relax_work;
+
+/* Relax m.  work: NULL, or where the work is kept between relaxations of
+ * one mesh (*work NULL at first; made, reused while the mesh is the same
+ * and no vertex fixed at first is free, else made anew); the caller frees
+ * it with sq_relax_work_free. */
+sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **work,
+                        sq_error *err);
+void sq_relax_work_free(sq_relax_work **work); /* NULL-safe, NULLs *work */
 
 #endif

@@ -53,6 +53,8 @@ void sq_json_field_keys(sq_json *j, const sq_field_analysis *a)
 sq_status sq_write_field_report(const char *path, const char *input, int face,
                                 const sq_field_analysis *a, double t_read, sq_error *err)
 {
+    double l2[2];
+    SQ_TRY(sq_guiding_field_norms(&a->field, &l2[0], &l2[1], err));
     sq_outfile f;
     SQ_TRY(sq_outfile_open(path, &f, err));
     sq_json j;
@@ -71,8 +73,8 @@ sq_status sq_write_field_report(const char *path, const char *input, int face,
     sq_json_key_int(&j, "order", a->field.order);
     sq_json_key_int(&j, "triangles", a->tri.mesh->ntris);
     sq_json_key_int(&j, "dofs", a->field.ndofs);
-    sq_json_key_number(&j, "l2_u", a->field.l2_u);
-    sq_json_key_number(&j, "l2_v", a->field.l2_v);
+    sq_json_key_number(&j, "l2_u", l2[0]);
+    sq_json_key_number(&j, "l2_v", l2[1]);
     sq_json_end_object(&j);
     sq_json_field_keys(&j, a);
     sq_json_key(&j, "timings_s");

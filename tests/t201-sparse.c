@@ -10,7 +10,16 @@
  *  - a block pattern (5 blocks of 3, a path 0-1-2-3-4 plus 0-4): blocks
  *    added from either side (the transposed one), single entries, the
  *    same solve to 1e-12 and again after a reset; entries and blocks
- *    outside the pattern and a malformed pattern are refused. */
+ *    outside the pattern and a malformed pattern are refused;
+ *  - block positions (sem_sparse_block_positions): a block given from
+ *    either side lands where sem_sparse_add_block puts it, the upper
+ *    triangle of a diagonal block nowhere;
+ *  - conjugate gradients preconditioned by an earlier factorization
+ *    (sem_sparse_pcg): with the matrix's own factorization one iteration;
+ *    after the values changed (assembled through the positions) the known
+ *    x to 1e-10 in at most n iterations; no iteration allowed: not
+ *    converged; refused before any factorization; a factorization of the
+ *    new values still possible after it. */
 #include "sparse.h"
 #include "test_util.h"
 
@@ -140,6 +149,105 @@ static int block_case(void)
     return fails;
 }
 
+/* x of A x = b (A dense, n x n), b from a known x: max relative error */
+static double pcg_error(sem_sparse *a, int n, const double *A, double rtol, int maxit, int *iters,
+                        int *converged, int *fails)
+{
+    double x[32], b[32], y[32];
+    sq_error err = {0};
+    for (int i = 0; i < n; ++i)
+        x[i] = 1.0 + 0.1 * i - 0.02 * i * i;
+    for (int i = 0; i < n; ++i) {
+        b[i] = 0.0;
+        for (int j = 0; j < n; ++j)
+            b[i] += A[i * n + j] * x[j];
+    }
+    if (sem_sparse_pcg(a, b, y, rtol, maxit, iters, converged, &err) != SQ_OK) {
+        printf("t201: pcg failed: %s\n", err.msg);
+        ++*fails;
+        return 1.0;
+    }
+    double e = 0.0;
+    for (int i = 0; i < n; ++i)
+        e = fmax(e, fabs(y[i] - x[i]) / fmax(1.0, fabs(x[i])));
+    return e;
+}
+
+static int pcg_case(void)
+{
+    int fails = 0;
+    sq_error err = {0};
+    sem_sparse *a = NULL;
+    enum { NB = 5, BS = 3, NN = NB * BS };
+    const long bptr[NB + 1] = {0, 3, 5, 7, 9, 10};
+    const long brow[10] = {0, 1, 4, 1, 2, 2, 3, 3, 4, 4};
+    /* the diagonal blocks and the others, (0,4) above the diagonal */
+    const int pairs[10][2] = {{0, 0}, {1, 1}, {2, 2}, {3, 3}, {4, 4},
+                              {1, 0}, {0, 4}, {2, 1}, {3, 2}, {4, 3}};
+    SQ_TEST_OK(sem_sparse_create_blocks(NB, BS, bptr, brow, &a, &err), err);
+    long pos[NB][NB][BS * BS];
+    for (int bi = 0; bi < NB; ++bi)
+        for (int bj = 0; bj < NB; ++bj)
+            if (sem_sparse_block_positions(a, bi, bj, pos[bi][bj], &err) != SQ_OK)
+                pos[bi][bj][0] = -2; /* outside the pattern */
+    fails += sq_check_int("t201 positions outside the pattern", "position", pos[3][0][0], -2);
+    fails += sq_check_int("t201 positions, upper diagonal entry", "position", pos[2][2][1], -1);
+    int mismatch = 0;
+    for (int r = 0; r < BS; ++r)
+        for (int c = 0; c < BS; ++c)
+            mismatch += pos[0][4][r * BS + c] != pos[4][0][c * BS + r] || pos[4][0][r * BS + c] < 0;
+    fails += sq_check_int("t201 positions of a block and its transpose", "mismatches", mismatch, 0);
+    int iters = 0, converged = 0;
+    double b[NN] = {1.0}, y[NN];
+    fails += sq_check_int("t201 pcg before a factorization", "status",
+                          sem_sparse_pcg(a, b, y, 1e-12, 10, &iters, &converged, &err),
+                          SQ_ERR_USAGE);
+    for (int round = 0; round < 3; ++round) {
+        /* round 0: factored; 1: the same values; 2: other values */
+        const double v = round == 2 ? 1.0 : 0.0;
+        double A[NN * NN] = {0};
+        if (round) SQ_TEST_OK(sem_sparse_reset(a, &err), err);
+        double *x = sem_sparse_values(a);
+        fails += sq_check_int("t201 values while assembling", "present", x != NULL, 1);
+        for (int k = 0; k < 10 && x; ++k) {
+            const int bi = pairs[k][0], bj = pairs[k][1];
+            for (int r = 0; r < BS; ++r)
+                for (int c = 0; c < BS; ++c) {
+                    double m = bi == bj ? (r == c ? 10.0 + bi + 3 * v : 0.4 / (1 + r + c))
+                                        : 0.3 * sin(1.0 + k + 2 * r + 3.0 * c + v);
+                    if (bi == bj && r < c) m = 0.4 / (1 + r + c); /* symmetric */
+                    if (pos[bi][bj][r * BS + c] >= 0) x[pos[bi][bj][r * BS + c]] += m;
+                    A[(bi * BS + r) * NN + bj * BS + c] = m;
+                    A[(bj * BS + c) * NN + bi * BS + r] = m;
+                }
+        }
+        if (round == 0) {
+            SQ_TEST_OK(sem_sparse_factor(a, &err), err);
+            fails += sq_check_abs("t201 positions", "max relative error",
+                                  solve_error(a, NN, A, &fails), 0.0, 1e-12);
+            continue;
+        }
+        double e = pcg_error(a, NN, A, 1e-13, 50, &iters, &converged, &fails);
+        const char *what = round == 1 ? "t201 pcg, exact preconditioner" : "t201 pcg";
+        fails += sq_check_int(what, "converged", converged, 1);
+        fails += sq_check_abs(what, "max relative error", e, 0.0, 1e-10);
+        if (round == 1) fails += sq_check_int(what, "iterations", iters, 1);
+        if (round == 2) {
+            if (iters < 2 || iters > NN) {
+                printf("t201 pcg: %d iterations, expected 2..%d\n", iters, NN);
+                ++fails;
+            }
+            pcg_error(a, NN, A, 1e-13, 0, &iters, &converged, &fails);
+            fails += sq_check_int("t201 pcg, no iteration", "converged", converged, 0);
+            SQ_TEST_OK(sem_sparse_factor(a, &err), err);
+            fails += sq_check_abs("t201 factored after pcg", "max relative error",
+                                  solve_error(a, NN, A, &fails), 0.0, 1e-12);
+        }
+    }
+    sem_sparse_free(&a);
+    return fails;
+}
+
 int main(void)
 {
     int fails = 0;
@@ -203,5 +311,6 @@ int main(void)
 
     fails += refactor_case();
     fails += block_case();
+    fails += pcg_case();
     return fails ? 1 : 0;
 }

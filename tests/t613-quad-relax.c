@@ -4,7 +4,12 @@
  * grid — the energy's minimizer there (conformal map of the square onto
  * itself followed by the stretch to 6 x 4 cells) — to 1e-8 (where the
  * relaxation stops: its steps are below 1e-9 of the extent), with the
- * boundary vertices still on their edges.  And stop_on_fold (ring below). */
+ * boundary vertices still on their edges.  The work kept from that
+ * relaxation (sq_relax_work: unknowns, Hessian, its factorization) serves
+ * a second one of the shaken grid with an interior vertex held off the
+ * grid: that vertex stays where it is, and the others end where a
+ * relaxation with nothing kept puts them, to 1e-8.  And stop_on_fold (ring
+ * below). */
 #include "cad.h"
 #include "quad_relax.h"
 #include "test_util.h"
@@ -51,7 +56,7 @@ static int ring(const cad_face *f, double r, double turn, int hold, int want)
         }
     }
     sq_relax_mesh m = {8, 4, xy, quad, tag, fixed, 1, 0};
-    SQ_TEST_OK(sq_quad_relax(f, &m, &err), err);
+    SQ_TEST_OK(sq_quad_relax(f, &m, NULL, &err), err);
     fails += sq_check_int("t613 ring", "folded", m.folded, want);
     return fails;
 }
@@ -100,14 +105,39 @@ int main(void)
                 fails += sq_check_int("t613", "side on a CAD edge", tag[4 * q + k] >= 0, 1);
             }
         }
+    double shaken[2 * (NU + 1) * (NV + 1)];
+    memcpy(shaken, xy, sizeof xy);
     sq_relax_mesh m = {nv, nq, xy, quad, tag, fixed};
-    SQ_TEST_OK(sq_quad_relax(f, &m, &err), err);
+    sq_relax_work *work = NULL;
+    SQ_TEST_OK(sq_quad_relax(f, &m, &work, &err), err);
     double worst = 0.0;
     for (int j = 0; j <= NV; j++)
         for (int i = 0; i <= NU; i++)
             worst = fmax(worst, hypot(xy[2 * ID(i, j)] - (double)i / NU,
                                       xy[2 * ID(i, j) + 1] - (double)j / NV));
     fails += sq_check_abs("t613", "largest distance to the uniform grid", worst, 0.0, 1e-8);
+    /* again, ID(2, 2) held at (0.36, 0.52) */
+    double alone[2 * (NU + 1) * (NV + 1)];
+    shaken[2 * ID(2, 2)] = 0.36;
+    shaken[2 * ID(2, 2) + 1] = 0.52;
+    fixed[ID(2, 2)] = 1;
+    memcpy(xy, shaken, sizeof xy);
+    memcpy(alone, shaken, sizeof xy);
+    SQ_TEST_OK(sq_quad_relax(f, &m, &work, &err), err);
+    fails += sq_check_int("t613 kept work", "work kept", work != NULL, 1);
+    sq_relax_mesh m2 = {nv, nq, alone, quad, tag, fixed};
+    SQ_TEST_OK(sq_quad_relax(f, &m2, NULL, &err), err);
+    double apart = 0.0;
+    for (int i = 0; i < 2 * nv; i++)
+        apart = fmax(apart, fabs(xy[i] - alone[i]));
+    fails += sq_check_abs("t613 kept work", "largest distance to a relaxation without it", apart,
+                          0.0, 1e-8);
+    fails += sq_check_abs("t613 kept work", "held vertex moved by",
+                          hypot(xy[2 * ID(2, 2)] - 0.36, xy[2 * ID(2, 2) + 1] - 0.52), 0.0, 0.0);
+    fails += sq_check_abs("t613 kept work", "its neighbour (3, 2) off the grid by",
+                          hypot(xy[2 * ID(3, 2)] - 0.5, xy[2 * ID(3, 2) + 1] - 0.5), 0.02, 0.01);
+    sq_relax_work_free(&work);
+    sq_relax_work_free(&work); /* NULL-safe */
     cad_face_free(&f);
     cad_model_free(&model);
     sq_test_path(path, sizeof path, 0, "square_hole.step");
