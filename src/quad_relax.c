@@ -10,6 +10,7 @@
 #define MAX_NEWTON 60
 #define MAX_HALVINGS 30
 #define MAX_DOUBLINGS 4
+#define MAX_PARABOLA_STEP 16.0 /* longest step from the parabola */
 #define CONVERGED 1e-9
 #define PCG_RTOL 5e-2
 #define PCG_MAXIT 6
@@ -490,19 +491,21 @@ static around_quality around(const sq_relax_mesh *m, const relax_work *w, int i)
         const double *c[4];
         for (int k = 0; k < 4; k++)
             c[k] = &m->xy[2 * q[k]];
+        /* sides compared by their squares */
         double dmin = HUGE_VAL, dmax = 0.0, lmin = HUGE_VAL, lmax = 0.0;
         for (int k = 0; k < 4; k++) {
             const double *p = c[k], *a = c[(k + 1) % 4], *b = c[(k + 3) % 4];
             double det = (a[0] - p[0]) * (b[1] - p[1]) - (a[1] - p[1]) * (b[0] - p[0]);
-            double l = hypot(a[0] - p[0], a[1] - p[1]);
+            double l = (a[0] - p[0]) * (a[0] - p[0]) + (a[1] - p[1]) * (a[1] - p[1]);
             dmin = fmin(dmin, det);
             dmax = fmax(dmax, det);
             lmin = fmin(lmin, l);
             lmax = fmax(lmax, l);
         }
-        r.shortest = fmin(r.shortest, lmin);
+        r.shortest = fmin(r.shortest, sqrt(lmin));
         double eta = fmax(sq_quad_corner_eta(c), 0.0);
-        r.distorted += !(dmin / dmax >= MIN_TAPER) || !(lmax <= MAX_STRETCH * lmin);
+        r.distorted +=
+            !(dmin / dmax >= MIN_TAPER) || !(lmax <= MAX_STRETCH * MAX_STRETCH * lmin);
         r.worst = fmin(r.worst, eta);
         r.score += fmin(eta, TAU_ETA) + 0.01 * eta;
     }
@@ -709,11 +712,20 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
         double rho = h == 0 ? (E - E1) / (-0.5 * gd) : 0.0;
         /* a full step that decreased the energy by more than its quadratic
          * model predicted was too short (the projected Hessian overestimates
-         * the curvature where it clamped negative eigenvalues): doubled
-         * while the energy keeps decreasing.  From DOUBLE_RHO = 1.1, not
-         * only for much larger ratios: naca0012's first steps have ratios
-         * 1.2-1.3 and moved 0.3 % of the extent each */
-        if (h == 0 && rho > DOUBLE_RHO) {
+         * the curvature where it clamped negative eigenvalues): lengthened
+         * to the minimum of the parabola through E(0), E'(0) = g.d and E(1),
+         * t = 1 / (2 - rho), or, where that parabola has none (rho >= 2),
+         * doubled while the energy keeps decreasing.  From DOUBLE_RHO = 1.1,
+         * not only for much larger ratios: naca0012's first steps have
+         * ratios 1.2-1.3 */
+        if (h == 0 && rho > DOUBLE_RHO && rho < 2.0 - 1.0 / MAX_PARABOLA_STEP) {
+            st = place(face, m, w, p, s0, d, 1.0 / (2.0 - rho), err);
+            double E2 = st == SQ_OK ? energy(m) : HUGE_VAL;
+            if (E2 < E1)
+                E1 = E2;
+            else if (st == SQ_OK)
+                st = place(face, m, w, p, s0, d, 1.0, err);
+        } else if (h == 0 && rho > DOUBLE_RHO) {
             double tx = 1.0;
             for (int x = 0; x < MAX_DOUBLINGS && st == SQ_OK; x++, tx *= 2.0) {
                 st = place(face, m, w, p, s0, d, 2.0 * tx, err);
