@@ -212,7 +212,8 @@ static void eval_cost(const sem_tri_mesh *mesh, int P, double out[3], long *dofs
 
 int main(int argc, char **argv)
 {
-    /* BLAS threads are fixed when the library loads: re-execute with one */
+    /* OpenMP threads (CHOLMOD's supernodal kernels) are fixed when libgomp
+     * loads: re-execute with one */
     if (!getenv("OPENBLAS_NUM_THREADS")) {
         setenv("OPENBLAS_NUM_THREADS", "1", 1);
         setenv("OMP_NUM_THREADS", "1", 1);

@@ -11,7 +11,7 @@ PKGS="meson ninja-build pkg-config gcc g++ \
 libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev \
 libocct-data-exchange-dev \
 libcgal-dev libgmp-dev libmpfr-dev \
-libgsl-dev liblapacke-dev libopenblas-dev libsuitesparse-dev \
+libgsl-dev liblapacke-dev libopenblas-dev libopenblas-serial-dev libsuitesparse-dev \
 librsvg2-bin \
 python3-gmsh gmsh"
 missing=""

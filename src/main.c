@@ -2,7 +2,6 @@
  * codes (../shared/DESIGN.md, "Exit statuses"), print errors as one line. */
 #include "cli.h"
 
-#include <cblas.h>
 #include <gsl/gsl_errno.h>
 #include <stdio.h>
 #include <string.h>
@@ -81,11 +80,6 @@ int main(int argc, char **argv)
     sq_error_clear(&err);
     /* GSL failures must come back as status codes, not abort the program */
     gsl_set_error_handler_off();
-    /* The dense blocks are small (element matrices, CHOLMOD's supernodes of
-     * a coarse mesh): OpenBLAS's threads spin-wait more than they compute
-     * (naca0012's field: 224 ms of CPU and 244 ms elapsed with them, 153 and
-     * 196 without). */
-    openblas_set_num_threads(1);
     if (argc < 2) {
         fputs("semquad: usage error: missing command (try: semquad help)\n", stderr);
         return SQ_ERR_USAGE;
