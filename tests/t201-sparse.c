@@ -25,10 +25,17 @@
 
 #define N 200
 
-/* max relative error of solving A x = b for a known x (A dense, n x n) */
-static double solve_error(sem_sparse *a, int n, const double *A, int *fails)
+/* Max relative error of solving A x = b for a known x (A dense, n x n):
+ * with the factorization, or (pcg != NULL: rtol, maxit in, iterations and
+ * converged out) by sem_sparse_pcg. */
+typedef struct {
+    double rtol;
+    int maxit, iters, converged;
+} pcg_run;
+
+static double solve_with(sem_sparse *a, int n, const double *A, pcg_run *pcg, int *fails)
 {
-    double x[32], b[32];
+    double x[32], b[32], y[32];
     sq_error err = {0};
     for (int i = 0; i < n; ++i)
         x[i] = 1.0 + 0.1 * i - 0.02 * i * i;
@@ -37,15 +44,23 @@ static double solve_error(sem_sparse *a, int n, const double *A, int *fails)
         for (int j = 0; j < n; ++j)
             b[i] += A[i * n + j] * x[j];
     }
-    if (sem_sparse_solve(a, b, b, &err) != SQ_OK) {
-        printf("t201: solve failed: %s\n", err.msg);
+    sq_status st = pcg ? sem_sparse_pcg(a, b, y, pcg->rtol, pcg->maxit, &pcg->iters,
+                                        &pcg->converged, &err)
+                       : sem_sparse_solve(a, b, y, &err);
+    if (st != SQ_OK) {
+        printf("t201: %s failed: %s\n", pcg ? "pcg" : "solve", err.msg);
         ++*fails;
         return 1.0;
     }
     double e = 0.0;
     for (int i = 0; i < n; ++i)
-        e = fmax(e, fabs(b[i] - x[i]) / fmax(1.0, fabs(x[i])));
+        e = fmax(e, fabs(y[i] - x[i]) / fmax(1.0, fabs(x[i])));
     return e;
+}
+
+static double solve_error(sem_sparse *a, int n, const double *A, int *fails)
+{
+    return solve_with(a, n, A, NULL, fails);
 }
 
 /* A = (4 + c) I + c' (path couplings) of size 12, assembled from triplets */
@@ -149,30 +164,6 @@ static int block_case(void)
     return fails;
 }
 
-/* x of A x = b (A dense, n x n), b from a known x: max relative error */
-static double pcg_error(sem_sparse *a, int n, const double *A, double rtol, int maxit, int *iters,
-                        int *converged, int *fails)
-{
-    double x[32], b[32], y[32];
-    sq_error err = {0};
-    for (int i = 0; i < n; ++i)
-        x[i] = 1.0 + 0.1 * i - 0.02 * i * i;
-    for (int i = 0; i < n; ++i) {
-        b[i] = 0.0;
-        for (int j = 0; j < n; ++j)
-            b[i] += A[i * n + j] * x[j];
-    }
-    if (sem_sparse_pcg(a, b, y, rtol, maxit, iters, converged, &err) != SQ_OK) {
-        printf("t201: pcg failed: %s\n", err.msg);
-        ++*fails;
-        return 1.0;
-    }
-    double e = 0.0;
-    for (int i = 0; i < n; ++i)
-        e = fmax(e, fabs(y[i] - x[i]) / fmax(1.0, fabs(x[i])));
-    return e;
-}
-
 static int pcg_case(void)
 {
     int fails = 0;
@@ -227,18 +218,20 @@ static int pcg_case(void)
                                   solve_error(a, NN, A, &fails), 0.0, 1e-12);
             continue;
         }
-        double e = pcg_error(a, NN, A, 1e-13, 50, &iters, &converged, &fails);
+        pcg_run run = {1e-13, 50, 0, 0};
+        double e = solve_with(a, NN, A, &run, &fails);
         const char *what = round == 1 ? "t201 pcg, exact preconditioner" : "t201 pcg";
-        fails += sq_check_int(what, "converged", converged, 1);
+        fails += sq_check_int(what, "converged", run.converged, 1);
         fails += sq_check_abs(what, "max relative error", e, 0.0, 1e-10);
-        if (round == 1) fails += sq_check_int(what, "iterations", iters, 1);
+        if (round == 1) fails += sq_check_int(what, "iterations", run.iters, 1);
         if (round == 2) {
-            if (iters < 2 || iters > NN) {
-                printf("t201 pcg: %d iterations, expected 2..%d\n", iters, NN);
+            if (run.iters < 2 || run.iters > NN) {
+                printf("t201 pcg: %d iterations, expected 2..%d\n", run.iters, NN);
                 ++fails;
             }
-            pcg_error(a, NN, A, 1e-13, 0, &iters, &converged, &fails);
-            fails += sq_check_int("t201 pcg, no iteration", "converged", converged, 0);
+            pcg_run none = {1e-13, 0, 0, 0};
+            solve_with(a, NN, A, &none, &fails);
+            fails += sq_check_int("t201 pcg, no iteration", "converged", none.converged, 0);
             SQ_TEST_OK(sem_sparse_factor(a, &err), err);
             fails += sq_check_abs("t201 factored after pcg", "max relative error",
                                   solve_error(a, NN, A, &fails), 0.0, 1e-12);
