@@ -3,6 +3,7 @@
 #include "cli.h"
 
 #include <gsl/gsl_errno.h>
+#include <omp.h>
 #include <stdio.h>
 #include <string.h>
 
@@ -80,6 +81,12 @@ int main(int argc, char **argv)
     sq_error_clear(&err);
     /* GSL failures must come back as status codes, not abort the program */
     gsl_set_error_handler_off();
+    /* CHOLMOD's supernodal loops ask OpenMP for 4 threads, a number fixed
+     * when it was built (CHOLMOD_OMP_NUM_THREADS), whatever the machine: on
+     * small supernodes (the DG guiding field) and 2 cores their barriers
+     * cost more than the loops, naca0012's whole run 0.25-0.29 s against
+     * 0.21-0.22 s with every parallel region run by the calling thread */
+    omp_set_max_active_levels(0);
     if (argc < 2) {
         fputs("semquad: usage error: missing command (try: semquad help)\n", stderr);
         return SQ_ERR_USAGE;
