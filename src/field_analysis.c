@@ -65,13 +65,13 @@ sq_status sq_field_analyse(const cad_face *face, const sq_field_options *opt,
     double t0 = sq_now();
     sq_status st = sq_face_info_compute(face, &out->info, err);
     sq_tri_options tri = opt->tri;
+    tri.size = sq_tri_size(&tri, out->info.area);
     double *graded = malloc(sizeof(double) * 2 * (size_t)(out->info.nvertices + 1));
     if (st == SQ_OK && !graded) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK && opt->grading > 0.0 && tri.nextra == 0) {
         st = sq_singular_vertices(face, &out->info, graded, &tri.nextra, err);
         tri.extra_xy = graded;
-        double size = tri.size > 0.0 ? tri.size : sqrt(fabs(out->info.area)) / 3.0;
-        tri.extra_size = opt->grading * size;
+        tri.extra_size = opt->grading * tri.size;
         tri.extra_growth = 1.0; /* hp: element size proportional to the distance */
     }
     if (st == SQ_OK) st = sq_triangulate(face, &tri, &out->tri, err);

@@ -193,15 +193,16 @@ sq_status sq_htheta_compute(const cad_face *face, const sq_pattern *pattern,
     tri.order = opt->tri.order > 0 ? opt->tri.order : (opt->order < 12 ? opt->order : 12);
     tri.nextra = nextra;
     tri.extra_xy = extra;
-    const double size = tri.size > 0.0 ? tri.size : sqrt(fabs(out->info.area)) / 3.0;
+    tri.size = sq_tri_size(&tri, out->info.area);
     for (int q = 0; q < nextra; q++)
-        hextra[q] = (q < np && opt->point_grading > 0.0 ? opt->point_grading : opt->grading) * size;
+        hextra[q] =
+            (q < np && opt->point_grading > 0.0 ? opt->point_grading : opt->grading) * tri.size;
     tri.extra_sizes = hextra;
     tri.extra_growth = 1.0;
     if ((st = sq_triangulate(face, &tri, &out->tri, err)) != SQ_OK) goto done;
     const sem_tri_mesh *m = out->tri.mesh;
     if ((st = sem_locator_create(m, &out->loc, err)) != SQ_OK) goto done;
-    if ((st = trace_sizes(m, &tri, size, np, &out->trace_size, err)) != SQ_OK) goto done;
+    if ((st = trace_sizes(m, &tri, tri.size, np, &out->trace_size, err)) != SQ_OK) goto done;
     if ((st = sq_mesh_vertex_loops(face, m, &out->vloops, err)) != SQ_OK) goto done;
     const double diag = hypot(out->info.bbox[2] - out->info.bbox[0],
                               out->info.bbox[3] - out->info.bbox[1]);

@@ -307,11 +307,13 @@ static void corner_derivatives(const double e[4], double g[4], double H[16])
     }
     double M11 = 8.0 * b * (3.0 * a + b) / s3, M22 = 8.0 * a * (a + 3.0 * b) / s3,
            M12 = -16.0 * ra * rb * (a + b) / s3;
-    double half = 0.5 * (M11 - M22), lp = 0.5 * (M11 + M22) + hypot(half, M12);
+    /* sqrt rather than hypot (a library call, the relaxation's hottest):
+     * these magnitudes are far from overflow for any corner with s > 0 */
+    double half = 0.5 * (M11 - M22), lp = 0.5 * (M11 + M22) + sqrt(half * half + M12 * M12);
     /* of the two (equivalent) forms of the eigenvector, the one away from
      * cancellation */
     double v0 = half >= 0.0 ? lp - M22 : M12, v1 = half >= 0.0 ? M12 : lp - M11;
-    double nv = hypot(v0, v1), z[4];
+    double nv = sqrt(v0 * v0 + v1 * v1), z[4];
     for (int i = 0; i < 4; i++)
         z[i] = (v0 * uh[i] + v1 * wh[i]) / nv;
     for (int i = 0; i < 4; i++)

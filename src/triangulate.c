@@ -391,6 +391,11 @@ static sq_status mesh_area(const sem_tri_mesh *m, double *area, sq_error *err)
     return st;
 }
 
+double sq_tri_size(const sq_tri_options *opt, double area)
+{
+    return opt->size > 0.0 ? opt->size : sqrt(fabs(area)) / 3.0;
+}
+
 sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_triangulation *out,
                          sq_error *err)
 {
@@ -403,10 +408,13 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
     if (opt->max_turn_deg <= 0.0 || opt->max_turn_deg > 90.0)
         return SQ_FAIL(err, SQ_ERR_USAGE, "boundary turning %g out of range (0, 90] degrees",
                        opt->max_turn_deg);
-    sq_face_info info;
-    SQ_TRY(sq_face_info_compute(face, &info, err));
-    double size = opt->size > 0.0 ? opt->size : sqrt(fabs(info.area)) / 3.0;
-    sq_face_info_free(&info);
+    double size = opt->size;
+    if (!(size > 0.0)) {
+        sq_face_info info;
+        SQ_TRY(sq_face_info_compute(face, &info, err));
+        size = sq_tri_size(opt, info.area);
+        sq_face_info_free(&info);
+    }
     size_ctx sc = {opt, size};
     bdisc b = {0};
     bpoly p = {0};

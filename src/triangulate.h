@@ -35,6 +35,11 @@ typedef struct {
 
 void sq_tri_options_default(sq_tri_options *opt);
 
+/* The size bound opt resolves to on a face of area `area`: opt->size, or
+ * sqrt(|area|) / 3 where that is <= 0.  Callers that know the area set
+ * opt->size with it, and sq_triangulate need not compute it. */
+double sq_tri_size(const sq_tri_options *opt, double area);
+
 /* The edge length the refinement aims at at xy: the resolved size bound
  * `size`, graded towards opt's extra points (extra_size there, growing at
  * extra_growth with the distance). */
