@@ -17,7 +17,22 @@ typedef struct {
     double *bxy;   /* 4*nb: segment ends */
     int *bedge;    /* per segment: CAD edge */
     double *bs;    /* 2*nb: arc lengths of the ends */
+    lay_hit *hit;  /* the set's crossings (crossings()), nhit of them, */
+    int nhit, hit_ok; /* valid while hit_ok: the set has not changed */
 } rctx;
+
+/* The crossings of the separatrix set, found once per state of the set
+ * (the repairs tried in turn on an unchanged set share them). */
+static sq_status crossings(rctx *r, sq_error *err)
+{
+    if (r->hit_ok) return SQ_OK;
+    free(r->hit);
+    r->hit = NULL;
+    r->nhit = 0;
+    SQ_TRY(lay_intersections(&r->L->seps, r->tol, &r->hit, &r->nhit, err));
+    r->hit_ok = 1;
+    return SQ_OK;
+}
 
 /* ---- geometry helpers --------------------------------------------------- */
 
@@ -335,9 +350,9 @@ static sq_status remove_duplicate(rctx *r, int *done, sq_error *err)
 static sq_status make_tjunction(rctx *r, int *done, sq_error *err)
 {
     sq_layout *L = r->L;
-    lay_hit *h = NULL;
-    int nh = 0;
-    SQ_TRY(lay_intersections(&L->seps, r->tol, &h, &nh, err));
+    SQ_TRY(crossings(r, err));
+    const lay_hit *h = r->hit;
+    const int nh = r->nhit;
     sq_status st = SQ_OK;
     for (int k = 0; k < nh && !*done; k++) {
         int stem = -1, other = -1, end = -1;
@@ -360,7 +375,6 @@ static sq_status make_tjunction(rctx *r, int *done, sq_error *err)
         st = split_sep(L, other, pos, p, L->nsing - 1, err);
         *done = 1;
     }
-    free(h);
     return st;
 }
 
@@ -370,9 +384,9 @@ static sq_status make_tjunction(rctx *r, int *done, sq_error *err)
 static sq_status cut_limit_cycle(rctx *r, int *done, sq_error *err)
 {
     sq_layout *L = r->L;
-    lay_hit *h = NULL;
-    int nh = 0;
-    SQ_TRY(lay_intersections(&L->seps, r->tol, &h, &nh, err));
+    SQ_TRY(crossings(r, err));
+    const lay_hit *h = r->hit;
+    const int nh = r->nhit;
     sq_status st = SQ_OK;
     int n = L->seps.n;
     for (int k = 0; k < n && !*done && st == SQ_OK; k++) {
@@ -430,7 +444,6 @@ static sq_status cut_limit_cycle(rctx *r, int *done, sq_error *err)
         L->stats.limit_cycles_cut++;
         *done = 1;
     }
-    free(h);
     return st;
 }
 
@@ -439,9 +452,9 @@ static sq_status cut_limit_cycle(rctx *r, int *done, sq_error *err)
 static sq_status split_crossing(rctx *r, int *done, sq_error *err)
 {
     sq_layout *L = r->L;
-    lay_hit *h = NULL;
-    int nh = 0;
-    SQ_TRY(lay_intersections(&L->seps, r->tol, &h, &nh, err));
+    SQ_TRY(crossings(r, err));
+    const lay_hit *h = r->hit;
+    const int nh = r->nhit;
     sq_status st = SQ_OK;
     for (int k = 0; k < nh && !*done; k++) {
         if (h[k].enda >= 0 || h[k].endb >= 0 || h[k].a == h[k].b) continue;
@@ -456,7 +469,6 @@ static sq_status split_crossing(rctx *r, int *done, sq_error *err)
         L->stats.crossings_split++;
         *done = 1;
     }
-    free(h);
     return st;
 }
 
@@ -844,8 +856,10 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
     memset(&d, 0, sizeof d);
     int it;
     for (it = 0; it < 400 && st == SQ_OK; it++) {
-        /* set-level repairs first, the graph rebuilt after them */
+        /* set-level repairs first, the graph rebuilt after them; each
+         * iteration follows a change of the set */
         int done = 0;
+        r.hit_ok = 0;
         st = remove_duplicate(&r, &done, err);
         if (st == SQ_OK && !done) st = make_tjunction(&r, &done, err);
         if (st == SQ_OK && !done) st = cut_limit_cycle(&r, &done, err);
@@ -874,6 +888,7 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
     free(r.bxy);
     free(r.bs);
     free(r.bedge);
+    free(r.hit);
     if (st == SQ_OK || st == SQ_ERR_LAYOUT) {
         L->stats.separatrices = L->seps.n;
         L->stats.patches = L->npatches;
