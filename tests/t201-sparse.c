@@ -104,19 +104,22 @@ static int refactor_case(void)
     return fails;
 }
 
+/* The block pattern of block_case and pcg_case: 5 blocks of 3, a path
+ * 0-1-2-3-4 plus 0-4; in its lower triangle, column j holds j and its
+ * neighbours after it. */
+enum { NB = 5, BS = 3, NN = NB * BS };
+static const long BPTR[NB + 1] = {0, 3, 5, 7, 9, 10};
+static const long BROW[10] = {0, 1, 4, 1, 2, 2, 3, 3, 4, 4};
+
 static int block_case(void)
 {
     int fails = 0;
     sq_error err = {0};
     sem_sparse *a = NULL;
-    enum { NB = 5, BS = 3, NN = NB * BS };
-    /* lower block pattern: column j holds j and its neighbours after it */
-    const long bptr[NB + 1] = {0, 3, 5, 7, 9, 10};
-    const long brow[10] = {0, 1, 4, 1, 2, 2, 3, 3, 4, 4};
     const long bad_ptr[3] = {0, 1, 2}, bad_row[2] = {1, 1};
     fails += sq_check_int("t201 malformed block pattern", "status",
                           sem_sparse_create_blocks(2, 2, bad_ptr, bad_row, &a, &err), SQ_ERR_USAGE);
-    SQ_TEST_OK(sem_sparse_create_blocks(NB, BS, bptr, brow, &a, &err), err);
+    SQ_TEST_OK(sem_sparse_create_blocks(NB, BS, BPTR, BROW, &a, &err), err);
     fails += sq_check_int("t201 blocks", "size", sem_sparse_size(a), NN);
     for (int round = 0; round < 2; ++round) {
         double A[NN * NN] = {0};
@@ -169,13 +172,10 @@ static int pcg_case(void)
     int fails = 0;
     sq_error err = {0};
     sem_sparse *a = NULL;
-    enum { NB = 5, BS = 3, NN = NB * BS };
-    const long bptr[NB + 1] = {0, 3, 5, 7, 9, 10};
-    const long brow[10] = {0, 1, 4, 1, 2, 2, 3, 3, 4, 4};
     /* the diagonal blocks and the others, (0,4) above the diagonal */
     const int pairs[10][2] = {{0, 0}, {1, 1}, {2, 2}, {3, 3}, {4, 4},
                               {1, 0}, {0, 4}, {2, 1}, {3, 2}, {4, 3}};
-    SQ_TEST_OK(sem_sparse_create_blocks(NB, BS, bptr, brow, &a, &err), err);
+    SQ_TEST_OK(sem_sparse_create_blocks(NB, BS, BPTR, BROW, &a, &err), err);
     long pos[NB][NB][BS * BS];
     for (int bi = 0; bi < NB; ++bi)
         for (int bj = 0; bj < NB; ++bj)
