@@ -196,7 +196,7 @@ double s_of_u(const Edge &e, double u)
     if (u <= e.tu.front()) return 0;
     if (u >= e.tu.back()) return e.length;
     size_t k = (size_t)(std::upper_bound(e.tu.begin(), e.tu.end(), u) - e.tu.begin()) - 1;
-    if (uniform_speed(e) && k + 1 < e.tu.size())
+    if (uniform_speed(e)) // u < tu.back(): k + 1 is in the table
         return e.ts[k] + (u - e.tu[k]) / (e.tu[k + 1] - e.tu[k]) * (e.ts[k + 1] - e.ts[k]);
     return e.ts[k] + gl_length(e, e.tu[k], u);
 }

@@ -649,8 +649,10 @@ static int work_fits(const relax_work *w, const sq_relax_mesh *m)
 sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **keep, sq_error *err)
 {
     relax_work *w = keep ? *keep : NULL;
-    if (w && !work_fits(w, m)) sq_relax_work_free(keep);
-    w = keep ? *keep : NULL;
+    if (w && !work_fits(w, m)) {
+        sq_relax_work_free(keep);
+        w = NULL;
+    }
     sq_status st = SQ_OK;
     if (!w) {
         w = calloc(1, sizeof *w);
