@@ -6,10 +6,15 @@
 #include "tri_nodes.h"
 #include "tri_quad.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 
+/* Unit round-off.  No BLAS here: the modes come from P-step recurrences on
+ * terms bounded by (P+1)^2 (sampled max |phi| = 99 at P = 16), so each value
+ * is off by at most 4 (P+1) U (P+1)^2. */
+#define U (DBL_EPSILON / 2)
 #define NMAX ((SEM_MAX_ORDER + 1) * (SEM_MAX_ORDER + 2) / 2)
 
 static int failures;
@@ -51,7 +56,11 @@ int main(void)
                 }
             }
         if (e > worst_mass) worst_mass = e;
-        check("mass matrix max |M - I|", P, ie, e, 0.0, 1e-13);
+        /* sum of npts terms w phi_i phi_j (2 roundings each): (npts + 2) U
+         * sum w |phi_i phi_j| <= (npts + 2) U (Cauchy-Schwarz, M_ii = 1); the
+         * values' errors add 2 sum w |phi| 4 (P+1)^3 U <= sqrt(2) 4 (P+1)^3 U
+         * (sum w = 1/2). */
+        check("mass matrix max |M - I|", P, ie, e, 0.0, (q->npts + 2.0 + 6.0 * pow(P + 1, 3)) * U);
         sem_tri_quad_free(&q);
     }
 
@@ -78,8 +87,12 @@ int main(void)
                     const double an = dir == 0 ? dr[m] : ds[m];
                     const double rel = fabs(fd - an) / scale;
                     if (rel > worst_fd) worst_fd = rel;
+                    /* truncation h^4 |f^(5)| / 30, by Markov's inequality at most
+                     * h^4 P^8 / 30 of the derivatives' size (exact for P <= 4), and
+                     * the round-off of the difference, 18 U (P+1)^2 / (12 h) */
                     check(dir == 0 ? "d/dr vs finite difference" : "d/ds vs finite difference", P, m,
-                          an / scale, fd / scale, 1e-6);
+                          an / scale, fd / scale,
+                          pow(h, 4) * pow(P, 8) / 30 + 1.5 * U * (P + 1) * (P + 1) / h);
                 }
             }
             /* a NULL output must not change the others */
@@ -90,7 +103,7 @@ int main(void)
     }
     /* phi_00 = sqrt(2) (constant of unit norm on area 1/2) */
     sem_tri_dubiner(0, 0.3, 0.3, phi, dr, ds);
-    check("phi_00", 0, 0, phi[0], sqrt(2.0), 1e-15);
+    check("phi_00", 0, 0, phi[0], sqrt(2.0), 2 * U * sqrt(2.0)); /* one or two roundings */
     if (getenv("SQ_VERBOSE"))
         printf("t102 worst |M-I| %.3g, worst relative finite-difference gap %.3g\n", worst_mass, worst_fd);
     return failures ? 1 : 0;
