@@ -3,9 +3,15 @@
  * T and weights are positive and sum to 1/2. */
 #include "tri_quad.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
+
+/* Unit round-off.  The rule is a product of two Gauss-Jacobi rules of n
+ * points (n^2 = npts): each weight is off by 2 * 4 n U relative (t101), a
+ * point by a few U; no BLAS. */
+#define U (DBL_EPSILON / 2)
 
 static int failures;
 
@@ -42,7 +48,9 @@ int main(void)
                 check("point inside T with positive weight", d, k, 0, r + s, 0.5, 0.5);
             ws += q->w[k];
         }
-        check("sum of weights", d, 0, 0, ws, 0.5, 1e-15);
+        const double n = sqrt(q->npts);
+        /* npts positive terms: (npts + 8 n) U of the sum 1/2 */
+        check("sum of weights", d, 0, 0, ws, 0.5, (q->npts + 8 * n) * U * 0.5);
         for (int a = 0; a <= d; ++a)
             for (int b = 0; a + b <= d; ++b) {
                 double v = 0.0;
@@ -50,7 +58,9 @@ int main(void)
                     v += q->w[k] * pow(q->rs[2 * k], a) * pow(q->rs[2 * k + 1], b);
                 const double e = exact(a, b);
                 worst = fmax(worst, fabs(v / e - 1.0));
-                check("monomial (relative)", d, a, b, v / e, 1.0, 2e-13);
+                /* positive terms: the sum's npts U, the weights' 8 n U, the
+                 * monomial's (a + b) few U from the points' */
+                check("monomial (relative)", d, a, b, v / e, 1.0, (q->npts + 8 * n + 4 * (a + b)) * U);
             }
         sem_tri_quad_free(&q);
         if (q) {
