@@ -2,12 +2,10 @@
  * partition of unity, derivatives summing to zero, and exact reproduction
  * (values and derivatives) of polynomials of degree P, for P = 1..16. */
 #include "gauss.h"
-#include "tri_basis.h"
+#include "sem_roundoff.h"
 #include "tri_lagrange.h"
 #include "tri_nodes.h"
 
-#include <float.h>
-#include <lapacke.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -25,26 +23,8 @@ static void check(const char *what, int P, int k, double value, double expected,
     }
 }
 
-#define U (DBL_EPSILON / 2)
-
-/* Tolerances: l = phi(x)^T V^{-1} with V^{-1} from LAPACK's LU (its
- * round-off depends on the BLAS kernel), whose relative error is about
- * n kappa_1(V) U; a sum of the l_k (or their derivatives) times values g_k
- * is then off by n kappa_1(V) U sum |g_k l_k| (the measured errors are 1e2
- * to 1e3 times smaller: this is the worst case, 1e-11 at P = 16).  A broken
- * basis is off by O(1). */
-static double kappa1(int P, const double *rs, int n)
-{
-    static double V[NMAX * NMAX];
-    lapack_int ipiv[NMAX];
-    for (int k = 0; k < n; ++k) sem_tri_dubiner(P, rs[2 * k], rs[2 * k + 1], V + (size_t)k * n, NULL, NULL);
-    const double anorm = LAPACKE_dlange(LAPACK_ROW_MAJOR, '1', n, n, V, n);
-    double rcond = 0.0;
-    if (LAPACKE_dgetrf(LAPACK_ROW_MAJOR, n, n, V, n, ipiv) != 0 ||
-        LAPACKE_dgecon(LAPACK_ROW_MAJOR, '1', n, V, n, anorm, &rcond) != 0 || !(rcond > 0))
-        return HUGE_VAL;
-    return 1.0 / rcond;
-}
+/* Tolerances: n kappa_1(V) U times the absolute sums (sem_roundoff.h). */
+#define U SQ_U
 
 /* A polynomial of total degree exactly P with all monomials present. */
 static double poly(int P, double r, double s, double *fr, double *fs)
@@ -73,7 +53,7 @@ int main(void)
         check("num_nodes", P, 0, n, sem_tri_num_nodes(P), 0);
         check("order", P, 0, sem_tri_lagrange_order(L), P, 0);
         const double *rs = sem_tri_lagrange_nodes(L);
-        const double nk = n * kappa1(P, rs, n) * U; /* n kappa U, see the top */
+        const double nk = sq_lagrange_roundoff(L); /* n kappa_1(V) U */
         for (int m = 0; m < n; ++m) {
             sem_tri_lagrange_eval(L, rs[2 * m], rs[2 * m + 1], l, NULL, NULL);
             for (int k = 0; k < n; ++k) {
