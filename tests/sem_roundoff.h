@@ -39,4 +39,22 @@ static inline double sq_lagrange_roundoff(const sem_tri_lagrange *L)
     return n / rcond * SQ_U;
 }
 
+/* max over a lattice of step 1/20 on T of sum_k |dl_k/dr| + |dl_k/ds|: the
+ * factor that turns e into the error of an interpolated derivative per unit
+ * of the coordinates (2.7e4 at P = 16, 260 at P = 6). */
+static inline double sq_lagrange_dsum(const sem_tri_lagrange *L)
+{
+    enum { NM = (SEM_MAX_ORDER + 1) * (SEM_MAX_ORDER + 2) / 2 };
+    double l[NM], lr[NM], ls[NM], m = 0.0;
+    const int n = sem_tri_lagrange_num_nodes(L);
+    for (int i = 0; i <= 20; ++i)
+        for (int j = 0; i + j <= 20; ++j) {
+            sem_tri_lagrange_eval(L, i / 20.0, j / 20.0, l, lr, ls);
+            double s = 0.0;
+            for (int k = 0; k < n; ++k) s += fabs(lr[k]) + fabs(ls[k]);
+            m = fmax(m, s);
+        }
+    return m;
+}
+
 #endif
