@@ -45,6 +45,8 @@ int main(void)
             int idx[SEM_MAX_ORDER + 1];
             sem_tri_edge_nodes(P, k, idx);
             const double *a = A[k], *b = A[(k + 1) % 3];
+            /* two or three roundings of numbers <= 1 on either side (no
+             * BLAS): 1e-15 = 9 U */
             for (int t = 0; t <= P; ++t) {
                 const double g = 0.5 * (x[t] + 1.0);
                 check("edge node r", P, k * 100 + t, rs[2 * idx[t]], a[0] + g * (b[0] - a[0]), 1e-15);
@@ -59,6 +61,8 @@ int main(void)
                 const double r = rs[2 * n], s = rs[2 * n + 1];
                 if (i > 0 && j > 0 && k > 0 && !(r > 0 && s > 0 && r + s < 1))
                     check("interior node inside", P, n, r + s, 0.5, 0.5);
+                /* (1 + 2 v_j - v_i - v_k) / 3 summed in another order: 4
+                 * roundings of terms <= 3, over 3: 4 U * 3 / 3 + U < 1e-15 */
                 check("rotation symmetry r", P, n, rs[2 * m], s, 1e-15);
                 check("rotation symmetry s", P, n, rs[2 * m + 1], 1.0 - r - s, 1e-15);
             }
