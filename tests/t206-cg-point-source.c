@@ -33,6 +33,7 @@ int main(void)
     for (int t = 0; t < m->ntris && src.elem < 0; ++t)
         for (int k = 0; k < 3; ++k) {
             const double *v = m->vxy + 2 * m->tri[3 * t + k];
+            /* the mesh builds the centre from coordinates <= 1: a few U */
             if (hypot(v[0], v[1]) < 1e-12) src = (sem_point_source){t, V[k][0], V[k][1], 1.0};
         }
     if (src.elem < 0) return printf("t206: no vertex at the centre\n"), 1;
