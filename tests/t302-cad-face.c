@@ -1,7 +1,29 @@
 /* t302 — cad_face on the examples: loops and edges, lengths, curvature,
  * coordinates, orientation (area by Green's theorem with the edge
  * evaluation), closure, arc-length parametrization and projection, Green
- * integrals along pieces of edges. */
+ * integrals along pieces of edges.
+ *
+ * Tolerances (OpenCASCADE and cad/cad_face.cpp, no BLAS), by what bounds them:
+ *  - lengths, Green integrals of circle arcs and lines, points and tangents
+ *    of analytic edges (1e-13, values <= 2 pi): adaptive Gauss-Legendre
+ *    stopped at 1e-15 of each piece (cad_face.cpp, adapt) summed over a few
+ *    tens of pieces, and OCC's closed forms: a few tens of U of the value;
+ *  - curvature (1e-12 max(1, kappa)): OCC's second derivative over the
+ *    speed squared, a few U relative, of curvatures <= 2;
+ *  - |tangent| = 1 (1e-13): the normalised first derivative, a few U;
+ *  - projection s, distance and foot (1e-9 L): the code's own slack, 1e-9 L
+ *    (cad_face.cpp, cad_face_edge_eval), after Newton from a 1e-12 L
+ *    chord table;
+ *    tangent at the nearest point the same, relative;
+ *  - arc length against int t ds (1e-10 L): s -> u is inverted by Newton
+ *    to max(1e-15 L, 1e-8 (sb - sa)) of a table piece (cad_face.cpp,
+ *    u_of_s), which a piece's quadratic convergence turns into 1e-16 L;
+ *    the test's own 64 x 5-point Gauss rule is exact to far below;
+ *  - areas by green() (1e-10, <= 20): the same, summed over all edges;
+ *  - corner positions (1e-9): an edge's start is its curve at the first
+ *    parameter, a few U from the file's point unless the loop closes a gap
+ *    (these files have none); 1e-9 is the code's arc-length slack;
+ *  - the naca0012 B-spline (1e-6): its STEP points carry 6 digits. */
 #include "cad.h"
 #include "t30x_cad.h"
 
