@@ -1,7 +1,13 @@
 /* t303 — cad_cdt_mesh: constrained Delaunay refinement with CGAL.  Unit
  * square minus a seeded square hole: angle and size bounds, exact area, no
  * triangle in the hole, Steiner points on segments flagged, graded sizes from
- * a callback; concave domain without holes; duplicates; bad input. */
+ * a callback; concave domain without holes; duplicates; bad input.
+ * Tolerances (CGAL with exact predicates, no BLAS): straight triangles'
+ * lengths and areas are a few roundings each, summed over at most a few
+ * hundred triangles: N U of the area <= 3 is below 1e-12, edge lengths a
+ * few U relative (1e-12); angles through acos of a few-U cosine, 20 to 30
+ * degrees from its singular ends: a few U in degrees (1e-9); a Steiner
+ * point on a segment is CGAL's constructed midpoint, a few U of l. */
 #include "cad.h"
 #include "t30x_cad.h"
 

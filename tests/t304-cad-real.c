@@ -1,6 +1,13 @@
 /* t304 — real CAD files written by others (../shared/geometries/real):
  * units kept (metres), areas, edges, holes, default face.  Skips (77) if
- * SQ_REAL is not set or the folder is not readable. */
+ * SQ_REAL is not set or the folder is not readable.
+ * Tolerances: areas and boxes are against values with 6 to 7 significant
+ * digits (the files' READMEs), so 1e-5 of m^2 and 1e-9 of a box side given
+ * exactly; frames are OCC's unit axes, exact up to a few U (1e-15); the
+ * curvature of a circle OCC evaluates in closed form (a few U relative of
+ * 1/35: 1e-12); the disc's area by green() with the code's arc-length
+ * tolerances (t302), relative 3e-12 of 3.8e3 mm^2: 1e-8; loops close
+ * within the code's 1e-9 L arc-length slack (check_closed). */
 #include "cad.h"
 #include "t30x_cad.h"
 

@@ -10,7 +10,9 @@
  *    in metres, total area 1 (not 1e6 or 1e-6); a millimetre file read
  *    afterwards is unaffected;
  *  - a diagonal cut ending at two corners: 2 triangles of 3 corners;
- *  - end points up to 1e-9 off the boundary are snapped onto it;
+ *  - end points up to 1e-9 off the boundary are snapped onto it (areas as
+ *    in t320: 1e-12 for exact pieces, 1e-9 of the total where curves are
+ *    interpolated; 1e-6 against the 7-digit area in the real file's README);
  *  - long separatrix-like curves (hundreds of points);
  *  - writing into a missing directory: SQ_ERR_OUTPUT, nothing left;
  *  - (if $SQ_REAL is readable) the aerofoil box in metres, a face with a
