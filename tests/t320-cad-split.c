@@ -10,11 +10,13 @@
  *     curve: an error and no split.
  * OpenCASCADE must print nothing (stdout and stderr are captured).
  * Tolerances (OCC, no BLAS): a split face's area is adaptive Gauss along
- * its edges to 1e-16 size^2 (cad/cad_split.cpp), so exact areas of straight
- * and circular pieces come to a few tens of U: 1e-12; sums over faces cut
- * along interpolated curves (B-splines through points, fitted by OCC to
- * its 1e-9 approximation tolerance, the same as the 1e-9 snap of end
- * points) agree to 1e-9 of the total; points located to that 1e-9. */
+ * its edges to 1e-16 size^2, the tolerance halved with each of at most 20
+ * splits (cad/cad_split.cpp, green_adapt): 20 x 1e-16 size^2 an edge unless
+ * the depth cap ends the splitting first; interior edges are integrated
+ * once each way and cancel in sums.  So 1e-12 for areas and sums of exact
+ * (straight, circular) pieces; 1e-9 of the total where interpolated curves
+ * (GeomAPI_Interpolate) may reach the cap; points located to the code's
+ * 1e-9 size end-point snap. */
 #include "cad.h"
 
 #include <dirent.h>

@@ -12,7 +12,8 @@
  *  - a diagonal cut ending at two corners: 2 triangles of 3 corners;
  *  - end points up to 1e-9 off the boundary are snapped onto it (areas as
  *    in t320: 1e-12 for exact pieces, 1e-9 of the total where curves are
- *    interpolated; 1e-6 against the 7-digit area in the real file's README);
+ *    interpolated; 1e-6 against the 7-digit area in the real file's
+ *    README; the interpolated wave's 1e-8 is its interpolation error);
  *  - long separatrix-like curves (hundreds of points);
  *  - writing into a missing directory: SQ_ERR_OUTPUT, nothing left;
  *  - (if $SQ_REAL is readable) the aerofoil box in metres, a face with a
