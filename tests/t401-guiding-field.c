@@ -1,6 +1,14 @@
 /* Guiding field on every example: the singular points, their valences and
  * positions, the corner valences and the Poincaré–Hopf sum, as issue 4 and
- * the geometries' README state them. */
+ * the geometries' README state them.
+ * Tolerances: the faces' symmetries put the points exactly on axes and
+ * centroids, but the triangulations are not symmetric, so a point is off by
+ * the field's discretisation error at the order used, not by round-off:
+ * 1e-6 of the shape at P = 10 (t402 bounds the change from P to P + 2 by
+ * that), 1e-5 where the point sits in a region of coarse elements (the
+ * triangle's centroid, the holes' mirror), 1e-4 at order 4.  The BLAS
+ * kernel moves them by round-off only (1e-10, a thousandth of that).
+ * Corners are matched to the files' points (a few U) within 1e-9. */
 #include "field_analysis.h"
 #include "test_util.h"
 

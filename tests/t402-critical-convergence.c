@@ -1,6 +1,9 @@
 /* Positions of the singular points converge with the order: on half_disc
  * and nautilus the points found at orders P and P+2 differ by less than
- * 1e-6 at P = 10, and the difference falls as P grows. */
+ * 1e-6 at P = 10, and the difference falls as P grows.  The bound is the
+ * discretisation error at P = 10 (1e-7 .. 1e-6 of the shape, exponential
+ * in P): round-off moves a simple zero by the field's error over its
+ * gradient, 1e-12 here, and any kernel's by less than 1e-9. */
 #include "field_analysis.h"
 #include "test_util.h"
 

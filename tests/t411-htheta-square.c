@@ -1,5 +1,10 @@
 /* Square, no singular point: H constant, θ equal to the boundary angle
- * (0 mod π/2) everywhere, parametrization gradients of unit length. */
+ * (0 mod π/2) everywhere, parametrization gradients of unit length.
+ * These hold in floating point as well: the H data and the angles' offsets
+ * from the edges' multiples of pi/2 are zero, so every solve sums zeros
+ * (0 under every OpenBLAS kernel).  1e-10 leaves room for data carrying a
+ * few U (edge angles through atan2) amplified by the solves' condition
+ * numbers, 1e5 at most on these ~1e3-unknown systems: 1e5 * few U. */
 #include "htheta_field.h"
 #include "test_util.h"
 
