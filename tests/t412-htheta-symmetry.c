@@ -2,7 +2,16 @@
  * its natural pattern (one valence-3 point at the centroid, from the
  * guiding field) under rotations by 120°, and the unit disc with four
  * valence-3 points on the axes under rotations by 90°: H is invariant and
- * θ turns with the rotation, modulo π/2. */
+ * θ turns with the rotation, modulo π/2.
+ * Tolerances: CGAL's triangulations are symmetric only up to the vertices'
+ * round-off (the triangle) or not at all (the disc), so the fields are
+ * symmetric to the H/θ solve's discretisation error at order 8 (1e-8 on
+ * the triangle, 1e-11 on the disc measured, any kernel): 1e-6, the points'
+ * own accuracy (t401).  The triangle's centroid is a simple zero on a
+ * mesh symmetric to round-off: off by the field's round-off over its
+ * gradient, kappa (3n+1) U (t201) with kappa ~ 1e4, n ~ 1e3 (3e-9; 3e-11
+ * measured): 1e-8.  The jump is a sum of θ differences around the point,
+ * each with the same solve's round-off times |θ| <= 2 pi: 1e-8. */
 #include "htheta_field.h"
 #include "test_util.h"
 

@@ -35,6 +35,8 @@ int main(void)
         for (int k = 0; k < ht.npoints; k++) {
             char what[64];
             snprintf(what, sizeof what, "jump around point %d (valence %d)", k, ht.points[k].valence);
+            /* θ differences summed around the point: the solve's round-off,
+             * kappa (3n+1) U |θ| ~ 2e-8 at worst (t412) */
             fails += sq_check_abs(files[c], what, ht.points[k].jump,
                                   M_PI_2 * (4 - p.points[k].valence), 1e-8);
             int touches = 0;
@@ -53,6 +55,8 @@ int main(void)
         fails += sq_check_int(files[c], "cut edges - interior cut vertices", ht.theta.cut.nedges, nin);
         free(on);
         fails += sq_check_int(files[c], "outer loop aligned", ht.loops[0].aligned, 1);
+        /* boundary integrals by GSL's QAG to 1e-13 relative against the
+         * corners' and points' exact multiples of pi/2: 1e-9 of a few 2 pi */
         fails += sq_check_abs(files[c], "H data imbalance", ht.h.imbalance, 0.0, 1e-9);
         sq_htheta_free(&ht);
         sq_pattern_free(&p);

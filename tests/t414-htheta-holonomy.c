@@ -37,6 +37,11 @@ int main(void)
     fails += sq_check_int("natural", "hole aligned", ht.loops[1].aligned, 1);
     fails += sq_check_abs("natural", "hole misalignment (deg)", ht.loops[1].misalignment * 180 / M_PI,
                           0.0, 1e-3);
+    /* misalignment: the natural field follows the hole to its
+     * discretisation error (1e-3 deg); the jump sums θ differences around
+     * the hole, the solve's round-off kappa (3n+1) U |θ| (t412) over the
+     * hole's ~1e2 edges: 1e-7; the turning is the curvature integral by
+     * GSL's QAG to 1e-13 relative: 1e-9 */
     fails += sq_check_abs("natural", "jump around the hole", ht.loops[1].jump, 2.0 * M_PI, 1e-7);
     fails += sq_check_abs("natural", "hole turning", ht.loops[1].turning, 2.0 * M_PI, 1e-9);
     fails += sq_check_int("natural", "alignment gate", sq_htheta_check_alignment(&ht, 0, &err), SQ_OK);

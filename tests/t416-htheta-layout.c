@@ -99,6 +99,7 @@ static int run(const char *file, const char *pattern, int for_mesh, sq_layout_st
         fails += sq_check_int(file, "quad patches", r.layout.stats.quad_patches, r.layout.stats.patches);
         double sum = 0.0;
         for (int p = 0; p < r.layout.npatches; p++) sum += r.layout.patches[p].area;
+        /* patch areas by cad_split's adaptive Green rule: 1e-9 (t320) */
         fails += sq_check_rel(file, "area sum", sum, r.info->area, 1e-9);
     }
     sq_layout_result_free(&r);

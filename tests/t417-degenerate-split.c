@@ -37,6 +37,8 @@ static int synthetic(const cad_face *square, int m, double complex c)
     for (int k = 0; k < n; k++) {
         double dx = s[k].x - p.x, dy = s[k].y - p.y, phi = atan2(dy, dx);
         fails += sq_check_int(ctx, "valence", s[k].valence, m > 0 ? 3 : 5);
+        /* closed forms of the given p and c (cos, sin, carg, cpow of numbers
+         * <= 1): a few tens of U, here and for the angle below */
         fails += sq_check_abs(ctx, "radius", hypot(dx, dy), SQ_SPLIT_FRACTION * 0.4, 1e-12);
         double complex w = c * cpow(dx + I * dy, m > 0 ? m : 0) * cpow(dx - I * dy, m < 0 ? -m : 0);
         double off = 0.25 * carg(w) - phi; /* cross direction against the ray */
@@ -69,6 +71,11 @@ int main(void)
     if (a->npoints == 1) {
         const sq_critical_point *p = &a->points[0];
         fails += sq_check_int("disc", "index of the centre", p->index, 4);
+        /* the centre is the circle-mode fit's (src/critical_points.c,
+         * fit_degenerate: Vieta, stable under round-off), iterated to 1e-12
+         * rho, on a mesh symmetric to round-off: the field's round-off over
+         * |c| rho^3 (kappa (3n+1) U, t412): 1e-10; c itself is the fit's
+         * mode, to the field's discretisation error: 1e-6 */
         fails += sq_check_abs("disc", "centre x", p->x, 0.0, 1e-10);
         fails += sq_check_abs("disc", "centre y", p->y, 0.0, 1e-10);
         fails += sq_check_abs("disc", "Re c", p->coef[0], 1.0, 1e-6);
@@ -82,6 +89,10 @@ int main(void)
         const sq_singularity *s = &r.sing[k];
         fails += sq_check_int("disc", "valence", s->valence, 3);
         fails += sq_check_int("disc", "origin", s->origin, SQ_ORIGIN_SPLIT);
+        /* the split's radius from the centre (1e-10) and the distance to the
+         * circle (cad_face's 1e-9 projection slack); the points turn with
+         * the fitted phase of c (6e-10 rad between BLAS kernels), which the
+         * rotation check does not see */
         fails += sq_check_abs("disc", "radius", hypot(s->x, s->y), SQ_SPLIT_FRACTION, 1e-9);
         /* its image under the rotation by 90 degrees is another split point */
         double best = HUGE_VAL;
@@ -97,6 +108,7 @@ int main(void)
     double sum = 0.0;
     for (int p = 0; p < r.layout.npatches; p++)
         sum += r.layout.patches[p].area;
+    /* patch areas by cad_split's adaptive Green rule: 1e-9 (t320) */
     fails += sq_check_rel("disc", "area sum", sum, M_PI, 1e-9);
 
     sq_mesher_options mo;
