@@ -7,21 +7,16 @@
  * incompatible pure Neumann data is refused with SQ_ERR_USAGE; the count of
  * degrees of freedom is V + E(P-1) + T(P-1)(P-2)/2. */
 #include "poisson.h"
+#include "sem_roundoff.h"
 #include "test_meshes.h"
 #include "test_util.h"
-
-#include <float.h>
 
 #define DEG 10
 
 /* Tolerances.  u lies in the discrete space, so only round-off is left:
- * the Cholesky solve's kappa(K) U relative error (CHOLMOD; its BLAS kernel
- * differs by CPU) with kappa(K) growing like P^4 / h^2 = P^4 n^2 for these
- * nodal bases (the usual h-p scaling of a stiffness matrix), times the size of u
- * (at most sum |c| on the unit square) and a factor 10 for the assembly's
- * sums: L2 10 P^4 n^2 U (1 + sum |c|) (3e-9 at P = 10, n = 3; measured
- * 7e-14 with every OpenBLAS kernel).  The H1 error is a discrete function's
- * gradient, at most 2 P^2 n times its L2 norm (inverse inequality). */
+ * sq_solve_roundoff (sem_roundoff.h) with |u| <= sum |c| on the unit
+ * square (3e-9 at P = 10, n = 3; measured 7e-14 with every OpenBLAS
+ * kernel), and 2 P^2 n times that in H1 (inverse inequality). */
 typedef struct {
     double c[DEG + 1][DEG + 1]; /* u = sum c[i][j] x^i y^j */
     int P;
@@ -30,10 +25,10 @@ typedef struct {
 
 static double l2_tol(const poly *p, int n)
 {
-    double s = 1.0;
+    double s = 0.0;
     for (int i = 0; i <= p->P; ++i)
         for (int j = 0; i + j <= p->P; ++j) s += fabs(p->c[i][j]);
-    return 10.0 * pow(p->P, 4) * n * n * (DBL_EPSILON / 2) * s;
+    return sq_solve_roundoff(p->P, n, s);
 }
 
 static double ipow(double x, int k)

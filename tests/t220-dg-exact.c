@@ -6,15 +6,13 @@
  * interior nodes are moved (a genuinely curved interior map, straight
  * boundary).
  * Tolerances: u lies in the space, so only the solve's round-off is left,
- * as for CG (t203): 10 P^4 n^2 U (1 + max |u|) in L2 (kappa(K) ~ P^4 / h^2;
- * the SIPG penalty scales like the stiffness), and 2 P^2 n times that in
- * H1 (inverse inequality). */
+ * as for CG (t203): sq_solve_roundoff (sem_roundoff.h) in L2, 2 P^2 n
+ * times that in H1 (inverse inequality). */
 #include "field.h"
 #include "poisson.h"
+#include "sem_roundoff.h"
 #include "test_meshes.h"
 #include "test_util.h"
-
-#include <float.h>
 
 typedef struct {
     int P;
@@ -69,7 +67,7 @@ static sem_bc_kind mixed(int tag, void *ctx)
 static int run(const char *ctxname, sem_tri_mesh *m, int n, int P, int use_mixed)
 {
     /* max |u| on the unit square: (|a| + |b| + |c|)^P + 1 */
-    const double tol = 10.0 * pow(P, 4) * n * n * (DBL_EPSILON / 2) * (2.0 + pow(1.8, P));
+    const double tol = sq_solve_roundoff(P, n, 1.0 + pow(1.8, P));
     sq_error err;
     poly p = {P, 0.4, 0.8, -0.6, use_mixed};
     sem_poisson *S = NULL;
