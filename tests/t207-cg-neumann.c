@@ -7,6 +7,7 @@
  *    (to the quadrature's round-off) and converges to u minus its mean (<= 1e-9 at P = 12; the
  *    mean taken from the Dirichlet solution at P = 12). */
 #include "poisson.h"
+#include "sem_roundoff.h"
 #include "test_meshes.h"
 #include "test_util.h"
 
@@ -66,18 +67,19 @@ int main(void)
         tm_errors(u, exact, NULL, &l2, &h1);
         if (getenv("T2XX_VERBOSE")) printf("mixed square P=%d L2=%.3e H1=%.3e\n", P, l2, h1);
         snprintf(where, sizeof where, "t207 mixed square P=%d", P);
-        /* the floor: round-off of a solution of (4P+1)^2 unknowns of size
-         * |u| <= e, (4P+1)^2 U e (7e-13 at P = 12, where the discretisation
-         * error has fallen below it) */
-        const double floor = (4 * P + 1) * (4 * P + 1) * (DBL_EPSILON / 2) * exp(1.0);
+        /* the floor: the solve's worst-case round-off (sem_roundoff.h; 2 x 2
+         * cells, |u| <= e), which the discretisation error falls below at
+         * P = 12 */
+        const double floor = sq_solve_roundoff(P, 2, exp(1.0));
         fails += sq_check_abs(where, "L2 error below 1% of the previous order's (or round-off)", l2,
                               0.0, fmax(prev / 100, floor));
         prev = l2;
         sem_field_free(&u);
     }
     /* discretisation error (CPU-independent): 1e-2 per four orders from
-     * P = 8's 7e-13, or the round-off floor above: 1e-10 bounds both */
-    fails += sq_check_abs("t207 mixed square P=12", "L2 error", prev, 0.0, 1e-10);
+     * P = 8's 7e-13, or the round-off floor above */
+    fails += sq_check_abs("t207 mixed square P=12", "L2 error", prev, 0.0,
+                          fmax(1e-10, sq_solve_roundoff(12, 2, exp(1.0))));
 
     sem_field *ud = solve(disc, 12, NULL);
     ctx_t c = {tm_mean(ud)};
@@ -92,8 +94,8 @@ int main(void)
         /* the mean is a quadrature sum of 40 triangles x (P/2 + 9)^2 points
          * of |u| <= e: 40 (P/2 + 9)^2 U e (3e-12 at P = 12) */
         fails += sq_check_abs(where, "mean", mean, 0.0, 40.0 * (P / 2 + 9) * (P / 2 + 9) * (DBL_EPSILON / 2) * exp(1.0));
-        /* discretisation errors (5e-6, 8e-12; round-off below): the rate of
-         * t204 on the same mesh, 10x per two orders */
+        /* discretisation errors (5e-6, 8e-12): the rate of t204 on the same
+         * mesh, 10x per two orders, plus the round-off (3.4e-10 at worst) */
         fails += sq_check_abs(where, "L2 error", l2, 0.0, P == 12 ? 1e-9 : 1e-4);
         sem_field_free(&u);
     }
