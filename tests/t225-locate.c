@@ -8,7 +8,12 @@
  *  - the hint walk from a random element and from the previous answer
  *    along a path agrees with the grid search (same element, or a point
  *    on their common boundary);
- *  - element nodes are found in their own element or a neighbour. */
+ *  - element nodes are found in their own element or a neighbour.
+ * The map-back tolerance: Newton stops at a step below 1e-13 in reference
+ * units (sem/locate.c), leaving ~1e-26 after its quadratic step, or at a
+ * stall at the coordinates' round-off; the locator's map and tri_geom's
+ * Lagrange form each carry n kappa_1 U sum |l| |x| (sem_roundoff.h: 1.7e-13
+ * at P = 4, |x| <= 1.5): 1e-12. */
 #include "locate.h"
 #include "test_meshes.h"
 #include "test_util.h"
