@@ -60,6 +60,8 @@ static int check_end_on_cad(const char *ctx, const cad_face *f, const sq_separat
     double d, sp, q[2];
     SQ_TEST_OK(cad_face_edge_project(f, s->end.id, p, &sp, NULL, &d, &err), err);
     SQ_TEST_OK(cad_face_edge_eval(f, s->end.id, s->end.s, q, NULL, NULL, &err), err);
+    /* the end is snapped to the edge's point at s (src/trace_ab4.c): both
+     * sides are curve evaluations, a few U of coordinates <= 1 */
     fails += sq_check_abs(ctx, "distance of the end from its CAD edge", d, 0.0, 1e-12);
     fails += sq_check_abs(ctx, "end = edge(s)", hypot(q[0] - p[0], q[1] - p[1]), 0.0, 1e-12);
     return fails;
@@ -98,6 +100,8 @@ int main(void)
     opt.max_length = 0.0;
     double p1[2] = {0.5, -0.3};
     SQ_TEST_OK(sq_trace_streamline(&cf, f, &info, 0, NULL, &opt, p1, 0.3, &s, NULL, &err), err);
+    /* a constant direction: AB4 has no truncation error, the ~1e2 steps add
+     * a few U each of |x| <= 1 */
     fails += sq_check_abs("synthetic line", "max distance from the line", line_dev(&s, p1, 0.3), 0.0, 1e-12);
     fails += check_end_on_cad("synthetic line", f, &s);
     fails += sq_check_abs("synthetic line", "end radius", hypot(s.xy[2 * s.npts - 2], s.xy[2 * s.npts - 1]), 1.0, 1e-12);
@@ -135,6 +139,8 @@ int main(void)
     fails += sq_check_abs("annulus P=10 ray", "max distance from the ray", line_dev(&s, q, 1.0), 0.0, 1e-8);
     fails += check_end_on_cad("annulus P=10 ray", f, &s);
     const double *e = &s.xy[2 * s.npts - 2];
+    /* radius: snapped onto the circle (a few U); angle: the field's 1e-9
+     * and AB4's 1e-9 over the ray */
     fails += sq_check_abs("annulus P=10 ray", "end radius", hypot(e[0], e[1]), 1.0, 1e-12);
     fails += sq_check_abs("annulus P=10 ray", "end angle", atan2(e[1], e[0]), 1.0, 1e-8);
     free(s.xy);

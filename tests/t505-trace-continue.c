@@ -25,6 +25,9 @@ int main(void)
         const double *p = &s->xy[2 * s->npts - 2];
         fails += sq_check_int("continue", "end kind", s->end.kind, e0.kind);
         fails += sq_check_int("continue", "end edge", s->end.id, e0.id);
+        /* the same AB4 path from a point of it: the steps differ, so the
+         * ends differ by AB4's error, below its 1e-9 tolerance per unit
+         * length (src/trace_ab4.c) over lengths <= 2 */
         fails += sq_check_abs("continue", "end moved by", hypot(p[0] - end[0], p[1] - end[1]), 0.0, 1e-8);
     }
     sq_separatrix_set_free(&set);
@@ -45,6 +48,8 @@ int main(void)
     const double *p = &s1->xy[2 * s1->npts - 2];
     fails += sq_check_int("continue to an obstacle", "end kind", s1->end.kind, SQ_END_SEPARATRIX);
     fails += sq_check_int("continue to an obstacle", "end id", s1->end.id, 0);
+    /* y: the intersection with the horizontal segment y = 0.25, a few U;
+     * x and s: the field's axis alignment to its discretisation error */
     fails += sq_check_abs("continue to an obstacle", "end y", p[1], 0.25, 1e-15);
     fails += sq_check_abs("continue to an obstacle", "end x", p[0], 0.0, 1e-6);
     fails += sq_check_abs("continue to an obstacle", "arc length along the obstacle", s1->end.s, 0.9, 1e-6);

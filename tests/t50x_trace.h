@@ -74,6 +74,7 @@ static inline int t5_check_ends(const char *ctx, const t5_case *c, const sq_sepa
             SQ_TEST_OK(cad_face_edge_eval(c->face, s->end.id, s->end.s, q, NULL, NULL, &err), err);
             snprintf(what, sizeof what, "separatrix %d: distance of its end from CAD edge %d", k,
                      s->end.id);
+            /* the end is the edge's point at s (snapped): a few U */
             fails += sq_check_abs(ctx, what, d, 0.0, 1e-12);
             snprintf(what, sizeof what, "separatrix %d: end - edge(s)", k);
             fails += sq_check_abs(ctx, what, hypot(q[0] - p[0], q[1] - p[1]), 0.0, 1e-12);

@@ -37,6 +37,9 @@ int main(void)
         const sq_layout_patch *P = &L.patches[p];
         fails += sq_check_int("square", "corners", P->ncorners, 4);
         fails += sq_check_int("square", "cycles", P->ncycles, 1);
+        /* straight sides: cad_split's Green rule exact to a few tens of U
+         * (t320); corner angles from segments' directions, a few U, but
+         * the lines are traced (AB4 1e-9) */
         fails += sq_check_abs("square", "area", P->area, 0.25, 1e-12);
         for (int k = 0; k < 4; k++) {
             fails += sq_check_int("square", "side edges", P->side_start[k + 1] - P->side_start[k], 1);

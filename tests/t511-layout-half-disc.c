@@ -52,6 +52,7 @@ int main(void)
         fails += sq_check_int("half disc", "corners", L.patches[p].ncorners, 4);
         for (int k = 0; k < L.patches[p].ncorners; k++) ncorner[L.patches[p].corners[k]]++;
     }
+    /* patch areas by cad_split's adaptive Green rule: 1e-9 (t320) */
     fails += sq_check_abs("half disc", "area sum", sum, M_PI / 2, 1e-9);
     for (int v = 0; v < L.nnodes; v++) {
         const sq_layout_node *n = &L.nodes[v];
@@ -61,6 +62,7 @@ int main(void)
     /* the bottom-middle patch: a rectangle 0.8 x 0.35 */
     int found = 0;
     for (int p = 0; p < L.npatches; p++)
+        /* straight sides: exact to a few tens of U (t320) */
         if (fabs(L.patches[p].area - 0.8 * 0.35) < 1e-12) found++;
     fails += sq_check_int("half disc", "0.8 x 0.35 patches", found, 1);
     sq_layout_defects d;

@@ -56,7 +56,7 @@ static int radial_dir(void *ctx, const double x[2], int *elem, double *theta)
     (void)ctx;
     (void)elem;
     double r = hypot(x[0], x[1]);
-    if (r > 1.0 + 1e-12 || r < 0.4 - 1e-12) return 1;
+    if (r > 1.0 + 1e-12 || r < 0.4 - 1e-12) return 1; /* boundary points' few U */
     *theta = atan2(x[1], x[0]);
     return 0;
 }
@@ -155,6 +155,9 @@ int main(void)
         fails += sq_check_int("triangle", "separatrices", L.stats.separatrices, 3);
         fails += sq_check_int("triangle", "inserted nodes", L.nsing, 1);
         if (L.nsing == 1) {
+            /* the repair's node from straight separatrices of a synthetic
+             * field: closed forms, then cad_split's 1e-9 snap; areas by
+             * its Green rule (t320) */
             fails += sq_check_abs("triangle", "node x", L.sing[0].x, 0.5, 1e-9);
             fails += sq_check_abs("triangle", "node y", L.sing[0].y, sqrt(3.0) / 6, 1e-9);
         }
@@ -189,6 +192,7 @@ int main(void)
         if (L.nsing == 1) {
             fails += sq_check_int(nm, "node valence", L.sing[0].valence, 3);
             fails += sq_check_int(nm, "node role", L.role[0], SQ_LROLE_VALENCE2);
+            /* as for the triangle: closed forms and the 1e-9 snap */
             fails += sq_check_abs(nm, "node x", L.sing[0].x, 89.0 / 90, 1e-9);
             fails += sq_check_abs(nm, "node y", L.sing[0].y, 7.0 / 15.0, 1e-9);
         }
@@ -201,7 +205,7 @@ int main(void)
                 for (int k = 0; k < L.patches[p].ncorners; k++) c += L.patches[p].corners[k] == v;
             if (n->kind == SQ_LNODE_SINGULAR) {
                 fails += sq_check_int(nm, "node corner of", c, 3);
-            } else if (n->kind == SQ_LNODE_CORNER && fabs(n->y + 0.2) < 1e-12) {
+            } else if (n->kind == SQ_LNODE_CORNER && fabs(n->y + 0.2) < 1e-12) { /* the file's point */
                 fails += sq_check_int(nm, "split vertex corner of", c, 2);
                 fails += sq_check_int(nm, "split vertex edges", n->degree, 3);
                 fails += sq_check_int(nm, "split vertex quads", L.vertex_quads[n->id], 2);
