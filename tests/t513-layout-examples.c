@@ -66,6 +66,7 @@ static int run(const char *file, int verbose)
         }
         double sum = 0.0;
         for (int p = 0; p < L.npatches; p++) sum += L.patches[p].area;
+        /* patch areas by cad_split's adaptive Green rule: 1e-9 (t320) */
         fails += sq_check_rel(file, "area sum", sum, a.info.area, 1e-9);
         sq_layout_free(&L);
     }

@@ -92,6 +92,7 @@ static int build(const char *name, shape *sh, int nsing, const sq_singularity *s
     }
     double sum = 0.0;
     for (int p = 0; p < L->npatches; p++) sum += L->patches[p].area;
+    /* patch areas by cad_split's adaptive Green rule: 1e-9 (t320) */
     return sq_check_rel(name, "area sum", sum, sh->info.area, 1e-9);
 }
 

@@ -42,6 +42,7 @@ int main(void)
         sq_face_info_free(&info);
         cad_face_free(&pf);
     }
+    /* patch areas by cad_split's adaptive Green rule: 1e-9 (t320) */
     fails += sq_check_rel("patches STEP", "area sum", sum, M_PI / 2, 1e-9);
     cad_model_free(&back);
     sq_layout_result_free(&r);
