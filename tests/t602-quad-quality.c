@@ -2,7 +2,18 @@
  * tau 100 %, scaled Jacobian 1), a parallelogram of angle 60 deg (eta 2/3),
  * an annulus sector (straight eta 1 - dtheta/pi, curved eta 1, area 3π/4
  * exactly by quadrature at Q = 8), a quarter disc with one valence-3
- * vertex; resampling GLL <-> equispaced. */
+ * vertex; resampling GLL <-> equispaced.
+ * Tolerances (no BLAS: 1D Lagrange bases in closed form, src/quad_quality.c;
+ * Q <= 10, coordinates <= 2): straight-sided eta from corner angles by a
+ * few atan2/acos, a few U of angles <= pi over 90 deg: 1e-13 (1e-12 for
+ * the annulus, whose corner coordinates are cos/sin); the curved measures
+ * and scaled Jacobians differentiate the nodes with D (sums of Q + 1 terms
+ * of sum |l'| <= Q^2 times |x| <= 2): 2 Q^2 (Q + 1) U |x| <= 5e-12, 1e-11
+ * (1e-10 for eta curved mean: a mean of those over ~1e2 points); areas by
+ * Gauss sums over n^2 (Q+1)^2 points: a few 1e-14; the annulus's curved
+ * corner eta and Q = 8 area are discretisation errors of the arcs (the
+ * boundary nodes lie on the circles to 2 U: 1e-15); resampling twice
+ * through Lagrange bases of Lebesgue constants <= 30: 1e-12. */
 #include "t6xx-quad-meshes.h"
 
 static const char *kind_name(sq_node_kind k) { return k == SQ_NODES_GLL ? "gll" : "equi"; }
