@@ -184,6 +184,8 @@ static int check_file(const char *path, const sq_quad_mesh *m, const char *ctx)
             const double *y = &mf.xyz[3 * (mf.quad_nodes[e * npe + k] - 1)];
             worst = fmax(worst, hypot(x[0] - y[0], x[1] - y[1]) + fabs(y[2]));
         }
+    /* written with %.17g (exact round trip); the map at a node is the 1D
+     * Lagrange sums, delta up to (Q + 1) U Lambda |x|: 1e-12 */
     f += sq_check_abs(ctx, "node positions vs element map", worst, 0.0, 1e-12);
     msh_free(&mf);
     return f;
@@ -227,6 +229,8 @@ static int check_quadstats(const char *py, const char *qs, const char *path, con
     SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, &q, &err), err);
     int f = 0, miss = 0;
     f += sq_check_int(ctx, "quadstats quads", (long)json_num(buf, "quads", &miss), m->nquads);
+    /* quadstats.py recomputes eta from the %.17g nodes: the same angles, a
+     * few U each, and the JSON's digits; tau is a ratio of counts */
     f += sq_check_abs(ctx, "quadstats eta_mean", json_num(buf, "eta_mean", &miss), q.eta_mean, 1e-12);
     f += sq_check_abs(ctx, "quadstats eta_min", json_num(buf, "eta_min", &miss), q.eta_min, 1e-12);
     f += sq_check_abs(ctx, "quadstats eta_pct_gt_0.9", json_num(buf, "eta_pct_gt_0.9", &miss),

@@ -149,6 +149,7 @@ static int check_vtu(const char *path, const sq_quad_mesh *m, const char *ctx)
                 const double *y = &xyz[3 * conn[e * npe + n]];
                 worst = fmax(worst, hypot(x[0] - y[0], x[1] - y[1]));
             }
+        /* written with full precision; the map at a node: (Q + 1) U Lambda |x| */
         f += sq_check_abs(ctx, "points vs element map", worst, 0.0, 1e-12);
     }
     free(s), free(xyz), free(conn);

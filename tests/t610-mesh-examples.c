@@ -90,6 +90,9 @@ static int run(const char *file, int Q, double size, int check_area)
     }
     fails += sq_check_int(ctx, "inverted quads", q.inverted, 0);
     if (Q >= 2) fails += sq_check_int(ctx, "non-conforming sides", conformity_defects(m), 0);
+    /* the order-Q boundary's geometric error on the faces checked (straight
+     * or gently curved at order >= 4), CPU-independent; round-off is far
+     * below */
     if (check_area) fails += sq_check_rel(ctx, "mesh area", q.area, r.analysis.info.area, 1e-8);
     sq_quad_mesh_free(&m);
     sq_layout_result_free(&r);
