@@ -31,10 +31,14 @@ with tempfile.TemporaryDirectory() as tmp:
                              capture_output=True, text=True).stdout
         s = json.loads(out)
         s = s[0] if isinstance(s, list) else s
+        # quadstats recomputes eta from the MSH's %.17g nodes with the same
+        # angle formulas: a few U per quad, summed over ~1e2 quads for the
+        # mean (1e-12, as t603); tau is a ratio of counts (1e-9 for its
+        # rounding; only an eta within a few U of 0.9 could flip a count)
         pairs = [("quads", m["quads"], s["quads"], 0),
-                 ("eta mean", m["quality"]["mean"], s["eta_mean"], 1e-3),
-                 ("eta min", m["quality"]["min"], s["eta_min"], 1e-3),
-                 ("tau", m["quality"]["above_0_9_percent"], s["eta_pct_gt_0.9"], 1e-2)]
+                 ("eta mean", m["quality"]["mean"], s["eta_mean"], 1e-12),
+                 ("eta min", m["quality"]["min"], s["eta_min"], 1e-12),
+                 ("tau", m["quality"]["above_0_9_percent"], s["eta_pct_gt_0.9"], 1e-9)]
         irr = s.get("interior_irregular", s.get("interior_irregular_vertices"))
         if irr is not None:
             pairs.append(("interior irregular", m["irregular_interior_vertices"], irr, 0))
