@@ -33,6 +33,8 @@ static inline sq_quad_mesh *t6_build(int npatch, const double (*pc)[4][2], int n
                     x[d] = (1 - u) * (1 - w) * c[0][d] + u * (1 - w) * c[1][d] + u * w * c[2][d] +
                            (1 - u) * w * c[3][d];
                 int k = 0;
+                /* the same point from two blocks: a few roundings of
+                 * coordinates <= 2 (a few U) against spacings >= 1e-2 */
                 while (k < nv && fabs(v[2 * k] - x[0]) + fabs(v[2 * k + 1] - x[1]) > 1e-12) k++;
                 if (k == nv) v[2 * nv] = x[0], v[2 * nv + 1] = x[1], nv++;
                 id[j * (n + 1) + i] = k;
@@ -62,7 +64,8 @@ static inline sq_quad_mesh *t6_build(int npatch, const double (*pc)[4][2], int n
     return m;
 }
 
-/* Unit square sides: 0 bottom, 1 right, 2 top, 3 left. */
+/* Unit square sides: 0 bottom, 1 right, 2 top, 3 left (midpoints of sides
+ * are a few U off the sides, interior ones >= 1e-2 away). */
 static inline int t6_square_tag(const double m[2])
 {
     if (m[1] < 1e-12) return 0;

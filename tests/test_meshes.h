@@ -70,6 +70,7 @@ static inline void tm_tag_square(sem_tri_mesh *m)
             const double *b = m->vxy + 2 * m->tri[3 * t + (k + 1) % 3];
             const double x = 0.5 * (a[0] + b[0]), y = 0.5 * (a[1] + b[1]);
             int tag = 0;
+            /* side midpoints: a few U off the side, others >= 1/n away */
             if (fabs(y) < 1e-12) tag = 0;
             else if (fabs(x - 1.0) < 1e-12) tag = 1;
             else if (fabs(y - 1.0) < 1e-12) tag = 2;
@@ -145,7 +146,8 @@ static inline void tm_disc_map(double xi, double eta, const void *ctx, double ou
     }
 }
 
-/* Vertex index of (x,y) in m->vxy[0..*nv), appending it if new. */
+/* Vertex index of (x,y) in m->vxy[0..*nv), appending it if new (the same
+ * vertex from two blocks differs by a few U; distinct ones by >= 1e-2). */
 static inline int tm_vertex(sem_tri_mesh *m, int *nv, const double p[2])
 {
     for (int v = 0; v < *nv; ++v)
