@@ -309,6 +309,9 @@ int main(void)
         double foot[2], s, d, p[2] = {0.5, 0.5};
         sq_error err;
         cad_face_edge_project(f, 4, p, &s, foot, &d, &err);
+        /* any circle point is a foot here: its distance is a few U; a
+         * projection's Newton converges quadratically, so the iterate after
+         * its last step (below the 1e-9 L slack) is at round-off: 1e-12 */
         NEAR("square_hole: distance from the hole centre to the hole", d, 0.25, 1e-12);
         p[0] = 2;
         p[1] = 0.5;
