@@ -51,7 +51,7 @@ sq_status sq_cmd_layout(int argc, char **argv, sq_error *err)
     if (note && !args.quiet) fprintf(stderr, "semquad: note: %s\n", note);
     sq_layout_result r;
     sq_status st = sq_layout_run(f, &opt, &r, err);
-    char split[256];
+    char split[512];
     if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && !args.quiet &&
         sq_layout_note(&r, split, sizeof split))
         fprintf(stderr, "semquad: note: %s\n", split);

@@ -122,7 +122,7 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
     progress(args.quiet, "semquad: read %s", args.input, t.read);
     sq_layout_result r;
     sq_status st = sq_layout_run(f, &lo, &r, err);
-    char split[256];
+    char split[512];
     if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && !args.quiet &&
         sq_layout_note(&r, split, sizeof split))
         fprintf(stderr, "semquad: note: %s\n", split);

@@ -37,7 +37,7 @@ static sq_status one_corner(const sq_guiding_field *g, const cad_face *face, con
     double sweep = fmod(a1 - a0 + 4.0 * M_PI, 2.0 * M_PI); /* counter-clockwise, into the face */
     if (sweep <= 0.0) sweep += 2.0 * M_PI;
     double prev[2], cur[2], total = 0.0;
-    SQ_TRY(sq_guiding_boundary_value(face, v->edge_out, A, prev, err));
+    SQ_TRY(sq_guiding_field_data(g, face, v->edge_out, A, prev, err));
     int elem = -1;
     for (int k = 1; k < ARC_SAMPLES; k++) {
         double a = a0 + sweep * k / ARC_SAMPLES, x[2] = {c[0] + rho * cos(a), c[1] + rho * sin(a)};
@@ -46,7 +46,7 @@ static sq_status one_corner(const sq_guiding_field *g, const cad_face *face, con
         total += turn(prev, cur);
         memcpy(prev, cur, sizeof prev);
     }
-    SQ_TRY(sq_guiding_boundary_value(face, v->edge_in, B, cur, err));
+    SQ_TRY(sq_guiding_field_data(g, face, v->edge_in, B, cur, err));
     total += turn(prev, cur);
     /* Marcon 2019, eq. (15): ψ = atan2(v,u)/4, I in units of π/2 */
     double alpha = v->angle_deg * M_PI / 180.0;

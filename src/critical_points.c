@@ -241,6 +241,36 @@ static sq_status fit_degenerate(const sq_guiding_field *g, double c[2], double r
     return SQ_OK;
 }
 
+/* The largest index circle around point q: inside the face and holding
+ * no other point. */
+static double index_circle_limit(const sq_critical_point *p, int n, int q)
+{
+    double lim = 0.9 * p[q].dist_boundary;
+    for (int o = 0; o < n; o++)
+        if (o != q) lim = fmin(lim, 0.9 * hypot(p[o].x - p[q].x, p[o].y - p[q].y));
+    return lim;
+}
+
+/* The index on the circle of radius rho, else on smaller and larger ones
+ * (up to lim): a circle that passes over a second zero Newton missed, or
+ * through a near-zero of (u, v), cannot be read.  A zero whose index no
+ * circle gives is not isolated at the field's resolution (a valence-3 and
+ * a valence-5 point on top of each other: indices +1 and -1): it is kept
+ * with index 0 and flagged `unresolved`, so that it starts no separatrix. */
+static void read_index(const sq_guiding_field *g, const double c[2], double rho, double lim,
+                       sq_critical_point *pt)
+{
+    static const double factor[] = {1.0, 0.5, 2.0, 0.25, 4.0, 0.125};
+    for (size_t k = 0; k < sizeof factor / sizeof factor[0]; k++) {
+        const double r = factor[k] * rho;
+        if (k > 0 && r >= lim) continue;
+        sq_error e = {0};
+        if (sq_field_winding(g, c, r, &pt->index, &e) == SQ_OK) return;
+    }
+    pt->index = 0;
+    pt->unresolved = 1;
+}
+
 sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *face,
                                   const sq_face_info *info, sq_critical_point **pts, int *npts,
                                   sq_error *err)
@@ -324,7 +354,7 @@ sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *fac
         if (p[q].near_boundary) {
             p[q].index = 0; /* no circle fits: reported with its distance */
         } else {
-            st = sq_field_winding(g, c, rho, &p[q].index, err);
+            read_index(g, c, rho, index_circle_limit(p, n, q), &p[q]);
         }
         p[q].valence = 4 - p[q].index;
         if (st == SQ_OK && abs(p[q].index) > 1) {

@@ -20,7 +20,10 @@
  *     index taken on a circle enclosing them;
  *  4. index = winding number of (u, v) on a small circle around the point
  *     (unwrapped atan2, sampled until every step turns less than π/2);
- *     valence V = 4 - index (eq. 13, Table 1), indices ±2 included;
+ *     valence V = 4 - index (eq. 13, Table 1), indices ±2 included; a
+ *     circle that cannot be read is shrunk and enlarged (inside the face,
+ *     around no other point); a zero no circle resolves is flagged
+ *     `unresolved` with index 0 (a 3/5 pair on top of each other);
  *  5. a zero of |index| > 1 (e.g. the disc's (u, v) ≈ z^4) is centred and
  *     its local expansion fitted from the Fourier modes of (u, v) on that
  *     circle (see coef), for splitting (degenerate_split.h). */
@@ -38,6 +41,7 @@ typedef struct {
     double dist_boundary; /* distance to the face's boundary */
     int near_boundary;    /* closer than SQ_NEAR_BOUNDARY_REL * face size */
     double residual;      /* |(u, v)| at the point */
+    int unresolved;       /* no index circle could be read: index 0 (see above) */
     /* |index| > 1 (a degenerate zero): c of u + iv ≈ c (z − z0)^index, or
      * c conj(z − z0)^|index| for a negative index, fitted on the index
      * circle, which also moves (x, y) to the zero's centre; else 0 */

@@ -2,15 +2,9 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 static int is_singular(const sq_critical_point *p) { return p->valence != 4 && !p->near_boundary; }
-
-int sq_has_degenerate_point(const sq_field_analysis *a)
-{
-    for (int k = 0; k < a->npoints; k++)
-        if (is_singular(&a->points[k]) && abs(a->points[k].index) > 1) return 1;
-    return 0;
-}
 
 /* Direction from p to the nearest point of the face's boundary; 0 (the x
  * axis) if the boundary is a circle about p (sampled distances within 1e-6
@@ -78,4 +72,26 @@ sq_status sq_elementary_points(const cad_face *face, const sq_field_analysis *a,
     *npts = n;
     if (ndegenerate) *ndegenerate = ndeg;
     return SQ_OK;
+}
+
+int sq_cancel_pairs(sq_singularity *s, int *n, double near)
+{
+    int count = 0;
+    for (;;) {
+        int bi = -1, bj = -1;
+        double bd = near;
+        for (int i = 0; i < *n; i++)
+            for (int j = 0; j < *n; j++)
+                if (s[i].valence == 3 && s[j].valence == 5) {
+                    const double d = hypot(s[i].x - s[j].x, s[i].y - s[j].y);
+                    if (d < bd) bd = d, bi = i, bj = j;
+                }
+        if (bi < 0) return count;
+        /* remove both, keeping the order of the others */
+        const int lo = bi < bj ? bi : bj, hi = bi < bj ? bj : bi;
+        memmove(&s[hi], &s[hi + 1], sizeof *s * (size_t)(*n - hi - 1));
+        memmove(&s[lo], &s[lo + 1], sizeof *s * (size_t)(*n - 2 - lo));
+        *n -= 2;
+        count++;
+    }
 }

@@ -35,7 +35,9 @@
 sq_status sq_elementary_points(const cad_face *face, const sq_field_analysis *a,
                                sq_singularity **pts, int *npts, int *ndegenerate, sq_error *err);
 
-/* Does the analysis hold an interior zero of |index| > 1? */
-int sq_has_degenerate_point(const sq_field_analysis *a);
+/* Cancels valence-3/valence-5 pairs closer than `near`, nearest first
+ * (their indices +1 and -1 sum to 0: Gauss–Bonnet still holds); the
+ * others keep their order.  Returns the pairs removed. */
+int sq_cancel_pairs(sq_singularity *s, int *n, double near);
 
 #endif

@@ -15,27 +15,48 @@ sem_method sq_guiding_method_auto(const sq_face_info *info)
     return SEM_CG;
 }
 
-sq_status sq_guiding_boundary_value(const cad_face *face, int edge, const double x[2], double uv[2],
-                                    sq_error *err)
+/* Marcon 2019, eq. (3): (cos 4θ_b, sin 4θ_b), θ_b the tangent angle. */
+static sq_status boundary_value(const cad_face *face, int edge, const double x[2], double uv[2],
+                                sq_error *err)
 {
     double t[2];
     SQ_TRY(cad_face_edge_tangent_near(face, edge, x, t, err));
-    double theta = atan2(t[1], t[0]); /* Marcon 2019, eq. (3) */
+    double theta = atan2(t[1], t[0]);
     uv[0] = cos(4.0 * theta);
     uv[1] = sin(4.0 * theta);
     return SQ_OK;
 }
 
-/* Boundary data of one component.  The two components' solves visit the
- * same boundary points in the same order, so the first pass keeps (x, u, v)
- * of each point and the second reuses them (one CAD projection per point,
- * not two); a point that does not match is projected again. */
+/* w = u + iv turned by twist x (1 − Re(w e^{−iφ}))/2: the family of
+ * edges whose data is e^{iφ} keeps it, the other (−e^{iφ}) turns by the
+ * whole twist (guiding_field.h). */
+static void twist_data(double uv[2], double twist, double phase)
+{
+    const double a = twist * 0.5 * (1.0 - (uv[0] * cos(phase) + uv[1] * sin(phase)));
+    const double u = uv[0] * cos(a) - uv[1] * sin(a), v = uv[0] * sin(a) + uv[1] * cos(a);
+    uv[0] = u;
+    uv[1] = v;
+}
+
+sq_status sq_guiding_field_data(const sq_guiding_field *g, const cad_face *face, int edge,
+                                const double x[2], double uv[2], sq_error *err)
+{
+    SQ_TRY(boundary_value(face, edge, x, uv, err));
+    if (g->twist != 0.0) twist_data(uv, g->twist, g->twist_phase);
+    return SQ_OK;
+}
+
+/* Boundary data of one component.  Every solve visits the same boundary
+ * points in the same order, so the first pass keeps (x, u, v) of each point
+ * and the others reuse them (one CAD projection per point); a point that
+ * does not match is projected again. */
 typedef struct {
     const cad_face *face;
     int comp;
-    long k, n, cap;   /* position in this pass; points kept by the first */
-    double *memo;     /* 4 n: x, y, u, v */
-    sq_status status; /* first failure, latched: the solver's callback has no error path */
+    long k, n, cap;      /* position in this pass; points kept by the first */
+    double *memo;        /* 4 n: x, y, u, v (untwisted) */
+    double twist, phase; /* sq_guiding_field */
+    sq_status status;    /* first failure, latched: the solver's callback has no error path */
     sq_error *err;
 } bdata_ctx;
 
@@ -45,24 +66,44 @@ static double boundary_data(const double x[2], const double n[2], int tag, void 
     bdata_ctx *c = p;
     double uv[2] = {0.0, 0.0};
     const long k = c->k++;
-    if (c->comp == 1 && k < c->n && c->memo[4 * k] == x[0] && c->memo[4 * k + 1] == x[1])
-        return c->memo[4 * k + 3];
-    if (c->status == SQ_OK) c->status = sq_guiding_boundary_value(c->face, tag, x, uv, c->err);
-    if (c->comp == 0 && c->status == SQ_OK) {
-        if (c->n == c->cap) {
-            const long cap = c->cap ? 2 * c->cap : 256;
-            double *m = realloc(c->memo, sizeof(double) * 4 * (size_t)cap);
-            if (!m) {
-                c->status = SQ_FAIL(c->err, SQ_ERR_INTERNAL, "out of memory");
-                return 0.0;
+    if (k < c->n && c->memo[4 * k] == x[0] && c->memo[4 * k + 1] == x[1]) {
+        uv[0] = c->memo[4 * k + 2];
+        uv[1] = c->memo[4 * k + 3];
+    } else {
+        if (c->status == SQ_OK) c->status = boundary_value(c->face, tag, x, uv, c->err);
+        if (k == c->n && c->status == SQ_OK) {
+            if (c->n == c->cap) {
+                const long cap = c->cap ? 2 * c->cap : 256;
+                double *m = realloc(c->memo, sizeof(double) * 4 * (size_t)cap);
+                if (!m) {
+                    c->status = SQ_FAIL(c->err, SQ_ERR_INTERNAL, "out of memory");
+                    return 0.0;
+                }
+                c->memo = m;
+                c->cap = cap;
             }
-            c->memo = m;
-            c->cap = cap;
+            double *m = c->memo + 4 * c->n++;
+            m[0] = x[0], m[1] = x[1], m[2] = uv[0], m[3] = uv[1];
         }
-        double *m = c->memo + 4 * c->n++;
-        m[0] = x[0], m[1] = x[1], m[2] = uv[0], m[3] = uv[1];
     }
+    if (c->twist != 0.0) twist_data(uv, c->twist, c->phase);
     return uv[c->comp];
+}
+
+/* Does the data take both values ±e^{iφ} (φ that of the first point) and
+ * no other?  Then the field is real up to that phase and changes sign.
+ * (Data e^{iφ} alone gives the constant field: no zeros.) */
+static int data_is_degenerate(const bdata_ctx *c, double *phase)
+{
+    if (c->n == 0) return 0;
+    *phase = atan2(c->memo[3], c->memo[2]);
+    int opposite = 0;
+    for (long k = 0; k < c->n; k++) {
+        const double *m = c->memo + 4 * k;
+        if (fabs(m[3] * cos(*phase) - m[2] * sin(*phase)) > SQ_DEGENERATE_DATA_TOL) return 0;
+        opposite |= m[2] * cos(*phase) + m[3] * sin(*phase) < 0.0;
+    }
+    return opposite;
 }
 
 static void zero_exact(const double x[2], void *ctx, double *u, double grad[2])
@@ -100,13 +141,19 @@ sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
     sq_status st = sem_field_create(mesh, order, 2, &out->uv, err);
     /* u and v share the matrix: one factorization, two right-hand sides */
     bdata_ctx ctx = {.face = face, .status = SQ_OK, .err = err};
-    for (int c = 0; c < 2 && st == SQ_OK; c++) {
-        ctx.comp = c;
-        ctx.k = 0;
-        sem_poisson_data data = {.g = boundary_data, .g_ctx = &ctx};
+    for (int c = 0; c < 2 && st == SQ_OK; c++)
         st = sem_field_create(mesh, order, 1, &comp[c], err);
-        if (st == SQ_OK) st = sem_poisson_solve(solver, &data, comp[c], err);
-        if (st == SQ_OK) st = ctx.status;
+    /* a degenerate field is solved again with the twisted data */
+    for (int pass = 0; pass < 2 && st == SQ_OK; pass++) {
+        if (pass == 1 && !data_is_degenerate(&ctx, &ctx.phase)) break;
+        ctx.twist = pass == 1 ? SQ_GUIDING_TWIST_DEG * M_PI / 45.0 : 0.0;
+        for (int c = 0; c < 2 && st == SQ_OK; c++) {
+            ctx.comp = c;
+            ctx.k = 0;
+            sem_poisson_data data = {.g = boundary_data, .g_ctx = &ctx};
+            st = sem_poisson_solve(solver, &data, comp[c], err);
+            if (st == SQ_OK) st = ctx.status;
+        }
     }
     if (st == SQ_OK) {
         int nm = out->uv->nmodes;
@@ -117,6 +164,8 @@ sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
         out->mesh = mesh;
         out->method = m;
         out->order = order;
+        out->twist = ctx.twist;
+        out->twist_phase = ctx.phase;
         out->ndofs = sem_poisson_ndofs(solver);
         st = sem_field_evaluator_create(out->uv, NULL, &out->ev, err);
     }

@@ -1,7 +1,17 @@
 /* semquad — the boundary-aligned guiding field (Marcon 2019, eqs. 3-4):
  * Δu = Δv = 0 in the face, (u, v) = (cos 4θ_b, sin 4θ_b) on its boundary,
  * θ_b the tangent angle of the CAD curve, solved with CG or DG spectral/hp
- * elements of order P on the curved triangulation. */
+ * elements of order P on the curved triangulation.
+ *
+ * Degenerate data: when every edge runs at a multiple of 45° in some frame
+ * (a square with a hole turned by 45°, chamfers), the data takes two values
+ * ±e^{iφ} only, and u + iv is e^{iφ} times a real harmonic function: it
+ * vanishes on whole curves, across which the cross turns by 45° in no
+ * particular sense, and a critical point's index cannot be read there.
+ * Such data is solved again with the crosses of one family of edges (those
+ * whose data is −e^{iφ}, φ that of the first boundary point) turned by
+ * SQ_GUIDING_TWIST_DEG: the generic nearby field, that of the face with
+ * those edges turned by as much, whose zeros are isolated. */
 #ifndef SQ_GUIDING_FIELD_H
 #define SQ_GUIDING_FIELD_H
 
@@ -14,6 +24,16 @@
  * data continuous (CG is used by --method auto). */
 #define SQ_RIGHT_ANGLE_TOL_DEG 1e-3
 
+/* |Im(w e^{−iφ})| under which boundary data counts as degenerate: the
+ * data is cos/sin of exact tangent angles, good to round-off. */
+#define SQ_DEGENERATE_DATA_TOL 1e-9
+/* Small against the 45° between the two families (the layout stays the
+ * face's), large against the field's discretization error so that the
+ * turn across the former zero curves is resolved by the elements: the
+ * same face with the hole turned by 44° instead of 45° meshes with the
+ * same layout. */
+#define SQ_GUIDING_TWIST_DEG 1.0
+
 typedef enum { SQ_METHOD_AUTO = -1, SQ_METHOD_CG = SEM_CG, SQ_METHOD_DG = SEM_DG } sq_method;
 
 typedef struct {
@@ -23,16 +43,19 @@ typedef struct {
     long ndofs;               /* per component */
     sem_field *uv;            /* two components: u, v */
     sem_field_evaluator *ev;  /* on uv */
+    double twist;             /* != 0: degenerate data, solved twisted (above); radians of w */
+    double twist_phase;       /* φ */
 } sq_guiding_field;
 
 /* The method --method auto picks: CG when every corner angle is a multiple
  * of 90 degrees (within SQ_RIGHT_ANGLE_TOL_DEG), else DG. */
 sem_method sq_guiding_method_auto(const sq_face_info *info);
 
-/* Boundary data at a point of CAD edge `edge`: (cos 4θ_b, sin 4θ_b) from the
- * edge's exact tangent at the point nearest to x. */
-sq_status sq_guiding_boundary_value(const cad_face *face, int edge, const double x[2],
-                                    double uv[2], sq_error *err);
+/* The boundary data g was solved with at a point of CAD edge `edge`:
+ * (cos 4θ_b, sin 4θ_b) from the edge's exact tangent at the point nearest
+ * to x, twisted as g was. */
+sq_status sq_guiding_field_data(const sq_guiding_field *g, const cad_face *face, int edge,
+                                const double x[2], double uv[2], sq_error *err);
 
 sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
                                  const sem_tri_mesh *mesh, int order, sq_method method,

@@ -2,6 +2,7 @@
 
 #include "degenerate_split.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
@@ -52,6 +53,19 @@ void sq_layout_result_free(sq_layout_result *r)
     memset(r, 0, sizeof *r);
 }
 
+/* Frees what one attempt left in out, keeping the guiding analysis. */
+static void clear_attempt(sq_layout_result *out)
+{
+    sq_field_analysis a = out->analysis;
+    out->analysis = (sq_field_analysis){0};
+    const sq_layout_report rep = out->report;
+    const int ndeg = out->ndegenerate;
+    sq_layout_result_free(out);
+    out->analysis = a;
+    out->report = rep;
+    out->ndegenerate = ndeg;
+}
+
 /* The guiding field's pattern: its critical points and corner valences. */
 static sq_status guiding_pattern(const cad_face *face, sq_layout_result *out, sq_error *err)
 {
@@ -69,23 +83,14 @@ static sq_status guiding_pattern(const cad_face *face, sq_layout_result *out, sq
     return SQ_OK;
 }
 
-/* The H/θ field (Jezdimirović 2021 §4-5) of the pattern file, or of the
- * guiding field's natural pattern (out->analysis, already computed). */
+/* The H/θ field (Jezdimirović 2021 §4-5) of a pattern; from_analysis: a
+ * pattern of the guiding field's (out->analysis, already computed). */
 static sq_status htheta_pattern(const cad_face *face, const sq_layout_options *opt,
-                                int from_analysis, sq_layout_result *out, sq_error *err)
+                                const sq_pattern *pat, int from_analysis, sq_layout_result *out,
+                                sq_error *err)
 {
-    sq_pattern pat = {0};
-    sq_status st;
-    if (from_analysis) {
-        st = sq_pattern_from_analysis(face, &out->analysis, &pat, err);
-        out->ndegenerate = pat.ndegenerate;
-    } else {
-        st = sq_pattern_read(opt->singularities, &pat, err);
-    }
-    if (st == SQ_OK) st = sq_htheta_compute(face, &pat, &opt->htheta, &out->htheta, err);
-    sq_pattern_free(&pat);
-    if (st == SQ_OK) st = sq_htheta_check_alignment(&out->htheta, opt->allow_misaligned, err);
-    if (st != SQ_OK) return st;
+    SQ_TRY(sq_htheta_compute(face, pat, &opt->htheta, &out->htheta, err));
+    SQ_TRY(sq_htheta_check_alignment(&out->htheta, opt->allow_misaligned, err));
     const sq_htheta *h = &out->htheta;
     out->sing = calloc((size_t)h->npoints + 1, sizeof *out->sing);
     out->vertex_quads = calloc((size_t)h->info.nvertices + 1, sizeof *out->vertex_quads);
@@ -106,51 +111,184 @@ static sq_status htheta_pattern(const cad_face *face, const sq_layout_options *o
     return SQ_OK;
 }
 
+/* Separatrices and layout on the field the attempt set up. */
+static sq_status trace_and_build(const cad_face *face, const sq_layout_options *opt,
+                                 const sq_cross_field *field, sq_layout_result *out, sq_error *err)
+{
+    double t0 = sq_now();
+    sq_status st =
+        sq_trace_separatrices_stats(field, face, out->info, out->vertex_quads, out->nsing,
+                                    out->sing, &opt->trace, &out->traced, &out->trace_stats, err);
+    double t1 = sq_now();
+    if (st == SQ_OK)
+        st = sq_layout_build(face, out->info, out->vertex_quads, out->nsing, out->sing,
+                             &out->traced, field, &opt->trace, &out->layout, err);
+    out->t_trace = t1 - t0;
+    out->t_layout = sq_now() - t1;
+    out->valid = st == SQ_OK;
+    return st;
+}
+
+/* One attempt: the guiding field's own points (pat NULL) or the H/θ field
+ * of pat.  On failure out keeps what was built (SQ_ERR_LAYOUT: the last
+ * layout, for pictures and reports). */
+static sq_status attempt(const cad_face *face, const sq_layout_options *opt, const sq_pattern *pat,
+                         int from_analysis, sq_layout_result *out, sq_error *err)
+{
+    clear_attempt(out);
+    sq_cross_field field;
+    sq_status st;
+    if (pat) {
+        st = htheta_pattern(face, opt, pat, from_analysis, out, err);
+        field = sq_htheta_cross_field(&out->htheta);
+    } else {
+        st = guiding_pattern(face, out, err);
+        field = sq_guiding_cross_field(&out->analysis.field);
+    }
+    if (st == SQ_OK) st = trace_and_build(face, opt, &field, out, err);
+    return st;
+}
+
+/* Gauss–Bonnet's least number of interior irregular vertices for these
+ * corner quads: |4χ − Σ (2 − n_c)| (every point of valence 3 or 5). */
+static int gauss_bonnet_min(const sq_face_info *info, const int *quads)
+{
+    int s = 4 * info->chi;
+    for (int k = 0; k < info->nvertices; k++) s -= 2 - quads[k];
+    return abs(s);
+}
+
+/* The natural pattern and its two-step variants (Jezdimirović 2021 §4):
+ * pats[0] the natural points (degenerate zeros split), pats[1] with the
+ * valence-3/valence-5 pairs closer than `near` cancelled, pats[2] the
+ * Gauss–Bonnet-minimal one (every pair cancelled, nearest first). */
+static sq_status natural_patterns(const cad_face *face, const sq_field_analysis *a, double near,
+                                  sq_pattern pats[3], int *ncancelled, sq_error *err)
+{
+    for (int k = 0; k < 3; k++) {
+        SQ_TRY(sq_pattern_from_analysis(face, a, &pats[k], err));
+        if (k == 1) *ncancelled = sq_cancel_pairs(pats[k].points, &pats[k].npoints, near);
+        if (k == 2) sq_cancel_pairs(pats[k].points, &pats[k].npoints, HUGE_VAL);
+    }
+    return SQ_OK;
+}
+
+/* Default route: the guiding field's layout unless its points are poor
+ * (degenerate, unresolved, or with pairs to cancel) or give no valid
+ * layout; then the H/θ field of the natural points with near pairs
+ * cancelled, then of the Gauss–Bonnet-minimal pattern; the first valid
+ * layout with the fewest points is kept (guiding last if not tried). */
+static sq_status two_step(const cad_face *face, const sq_layout_options *opt,
+                          sq_layout_result *out, sq_error *err)
+{
+    const sq_field_analysis *a = &out->analysis;
+    sq_layout_report *rep = &out->report;
+    sq_pattern pats[3] = {{0}};
+    sq_tri_options tri = opt->field.tri;
+    int near = 0;
+    sq_status st =
+        natural_patterns(face, a, sq_tri_size(&tri, a->info.area), pats, &near, err);
+    if (st != SQ_OK) goto done;
+    out->ndegenerate = pats[0].ndegenerate;
+    for (int k = 0; k < a->npoints; k++) rep->unresolved += a->points[k].unresolved;
+    const int poor = pats[0].ndegenerate > 0 || rep->unresolved > 0 || near > 0;
+    int tried_guiding = 0;
+    if (!poor) {
+        st = attempt(face, opt, NULL, 1, out, err);
+        tried_guiding = 1;
+        if (st == SQ_OK) goto done;
+        snprintf(rep->reason, sizeof rep->reason, "no valid layout on the guiding field: %.120s",
+                 err->msg);
+    } else if (pats[0].ndegenerate > 0 || rep->unresolved > 0) {
+        snprintf(rep->reason, sizeof rep->reason, "degenerate singular points");
+    } else {
+        snprintf(rep->reason, sizeof rep->reason, "%d valence-3/valence-5 pair%s closer than %g",
+                 near, near == 1 ? "" : "s",
+                 sq_tri_size(&tri, a->info.area));
+    }
+    rep->two_step = 1;
+    /* the near pairs cancelled, then every pair: the first valid of the
+     * fewest points (pats[2] has no more than pats[1]) */
+    sq_error e = {0};
+    int valid1 = attempt(face, opt, &pats[1], 1, out, &e) == SQ_OK;
+    if (valid1 && pats[1].npoints == pats[2].npoints) {
+        rep->pattern = 1;
+        goto done;
+    }
+    if (pats[2].npoints < pats[1].npoints && attempt(face, opt, &pats[2], 1, out, &e) == SQ_OK) {
+        rep->pattern = 2;
+        goto done;
+    }
+    if (valid1) {
+        rep->pattern = 1;
+        st = attempt(face, opt, &pats[1], 1, out, err);
+        goto done;
+    }
+    /* no H/θ layout: the guiding field's own (its failure is the one told) */
+    rep->pattern = 0;
+    rep->two_step = !tried_guiding;
+    st = attempt(face, opt, NULL, 1, out, err);
+done:
+    /* pairs cancelled in the pattern traced */
+    rep->cancelled_pairs = (pats[0].npoints - pats[rep->pattern].npoints) / 2;
+    if (rep->cancelled_pairs == 0) rep->pattern = 0;
+    for (int k = 0; k < 3; k++) sq_pattern_free(&pats[k]);
+    return st;
+}
+
 sq_status sq_layout_run(const cad_face *face, const sq_layout_options *opt, sq_layout_result *out,
                         sq_error *err)
 {
     memset(out, 0, sizeof *out);
     sq_status st = SQ_OK;
-    sq_cross_field field;
     const int natural = opt->singularities && !strcmp(opt->singularities, "natural");
     if (!opt->singularities || natural)
         st = sq_field_analyse(face, &opt->field, &out->analysis, err);
-    /* a degenerate zero of the guiding field is split into elementary
-     * points, whose layout the H/θ field of that pattern gives */
-    if (st == SQ_OK && (opt->singularities || sq_has_degenerate_point(&out->analysis))) {
-        st = htheta_pattern(face, opt, !opt->singularities || natural, out, err);
-        field = sq_htheta_cross_field(&out->htheta);
+    sq_pattern pat = {0};
+    if (st == SQ_OK && !opt->singularities) {
+        st = two_step(face, opt, out, err);
     } else if (st == SQ_OK) {
-        st = guiding_pattern(face, out, err);
-        field = sq_guiding_cross_field(&out->analysis.field);
+        st = natural ? sq_pattern_from_analysis(face, &out->analysis, &pat, err)
+                     : sq_pattern_read(opt->singularities, &pat, err);
+        out->ndegenerate = pat.ndegenerate;
+        out->report.pattern = natural ? 0 : 3;
+        if (st == SQ_OK) st = attempt(face, opt, &pat, natural, out, err);
+        sq_pattern_free(&pat);
     }
-    if (st != SQ_OK) {
+    if (st != SQ_OK && st != SQ_ERR_LAYOUT) {
         sq_layout_result_free(out);
         return st;
     }
-    double t0 = sq_now();
-    st = sq_trace_separatrices_stats(&field, face, out->info, out->vertex_quads, out->nsing,
-                                     out->sing, &opt->trace, &out->traced, &out->trace_stats, err);
-    double t1 = sq_now();
-    if (st == SQ_OK)
-        st = sq_layout_build(face, out->info, out->vertex_quads, out->nsing, out->sing,
-                             &out->traced, &field, &opt->trace, &out->layout, err);
-    out->t_trace = t1 - t0;
-    out->t_layout = sq_now() - t1;
-    out->valid = st == SQ_OK;
-    if (st != SQ_OK && st != SQ_ERR_LAYOUT) sq_layout_result_free(out);
+    out->report.gauss_bonnet_min = gauss_bonnet_min(out->info, out->vertex_quads);
     return st;
 }
 
 int sq_layout_note(const sq_layout_result *r, char *buf, size_t n)
 {
-    if (r->ndegenerate == 0) return 0;
-    int nsplit = 0;
+    const sq_layout_report *rep = &r->report;
+    static const char *what[] = {"the natural points", "the natural points with near pairs cancelled",
+                                 "the Gauss-Bonnet-minimal pattern"};
+    int nsplit = 0, len = 0;
     for (int k = 0; k < r->nsing; k++) nsplit += r->sing[k].origin == SQ_ORIGIN_SPLIT;
-    snprintf(buf, n,
-             "%d degenerate singular point%s of the guiding field (|index| > 1) split into %d "
-             "elementary points at %g x the distance to the boundary; layout traced on the "
-             "H/theta field of that pattern",
-             r->ndegenerate, r->ndegenerate == 1 ? "" : "s", nsplit, SQ_SPLIT_FRACTION);
+    if (!rep->two_step && r->ndegenerate == 0 && !r->analysis.field.twist) return 0;
+    if (r->analysis.field.twist)
+        len += snprintf(buf + len, n - (size_t)len,
+                        "guiding field degenerate (edges at multiples of 45 deg), solved with "
+                        "one family turned by %g deg; ",
+                        SQ_GUIDING_TWIST_DEG);
+    if (r->ndegenerate && (size_t)len < n)
+        len += snprintf(buf + len, n - (size_t)len,
+                        "%d degenerate singular point%s of the guiding field (|index| > 1) split "
+                        "into %d elementary points at %g x the distance to the boundary; ",
+                        r->ndegenerate, r->ndegenerate == 1 ? "" : "s", nsplit,
+                        SQ_SPLIT_FRACTION);
+    if (rep->two_step && (size_t)len < n)
+        len += snprintf(buf + len, n - (size_t)len,
+                        "two-step (%s): layout traced on the %s field of %s (%d singular "
+                        "points, Gauss-Bonnet minimum %d, %d pairs cancelled); ",
+                        rep->reason, r->field.kind, what[rep->pattern], r->nsing,
+                        rep->gauss_bonnet_min,
+                        rep->cancelled_pairs);
+    if (len >= 2 && (size_t)len < n) buf[len - 2] = '\0'; /* the last "; " */
     return 1;
 }

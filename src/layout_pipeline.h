@@ -36,6 +36,22 @@ void sq_layout_options_default(sq_layout_options *opt);
  * give the examples the same meshes (layout_pipeline.c). */
 void sq_layout_options_for_mesh(sq_layout_options *opt);
 
+/* How the default route chose its pattern (Jezdimirović 2021 §4: the
+ * two-step approach when the guiding field's points are poor). */
+typedef struct {
+    int gauss_bonnet_min; /* |4χ − Σ_c (2 − n_c)|, n_c the quads at vertex c: the
+                             least number of interior irregular vertices */
+    int cancelled_pairs;  /* valence-3/valence-5 pairs of the natural points left out
+                             of the pattern traced (their indices sum to 0) */
+    int unresolved;       /* critical points whose index no circle gave (dropped) */
+    int two_step;         /* the default route left the guiding field's own points */
+    int pattern;          /* traced from: 0 the natural points (guiding field, or
+                             H/θ of the split ones), 1 near pairs cancelled,
+                             2 the Gauss–Bonnet-minimal pattern (every pair cancelled),
+                             3 a pattern file */
+    char reason[200];     /* why the two-step route was taken */
+} sq_layout_report;
+
 typedef struct {
     sq_field_analysis analysis; /* guiding field (zeroed for a pattern file) */
     int ndegenerate;            /* degenerate critical points split (degenerate_split.h):
@@ -51,6 +67,7 @@ typedef struct {
     sq_layout layout;
     int valid;              /* layout passed sq_layout_check */
     double t_trace, t_layout; /* seconds */
+    sq_layout_report report;
 } sq_layout_result;
 
 /* On SQ_ERR_LAYOUT the result still holds the last layout (for pictures
@@ -60,8 +77,9 @@ sq_status sq_layout_run(const cad_face *face, const sq_layout_options *opt, sq_l
                         sq_error *err);
 void sq_layout_result_free(sq_layout_result *r); /* frees, zeroes the struct */
 
-/* A line for the user when the pattern is not the one asked for
- * (degenerate critical points split); returns 0 (buf untouched) if none. */
+/* A line for the user when the pattern is not the guiding field's own
+ * (a degenerate field twisted, degenerate critical points split, the
+ * two-step route and why); returns 0 (buf untouched) if none. */
 int sq_layout_note(const sq_layout_result *r, char *buf, size_t n);
 
 #endif

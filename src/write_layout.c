@@ -65,6 +65,19 @@ static void json_layout_keys(sq_json *j, const sq_layout_result *r)
     sq_json_key_int(j, "duplicates_removed", s->duplicates_removed);
     sq_json_key_int(j, "crossings_split", s->crossings_split);
     sq_json_key_int(j, "iterations", s->iterations);
+    /* the pattern's route (layout_pipeline.h, docs/layout.md) */
+    const sq_layout_report *rep = &r->report;
+    static const char *pattern[] = {"natural", "pairs-cancelled", "gauss-bonnet-minimal",
+                                    "imposed"};
+    sq_json_key_int(j, "gauss_bonnet_min", rep->gauss_bonnet_min);
+    sq_json_key_int(j, "cancelled_pairs", rep->cancelled_pairs);
+    sq_json_key_int(j, "kept_pairs",
+                    r->nsing > rep->gauss_bonnet_min ? (r->nsing - rep->gauss_bonnet_min) / 2 : 0);
+    sq_json_key_int(j, "unresolved_points", rep->unresolved);
+    sq_json_key(j, "two_step");
+    sq_json_bool(j, rep->two_step);
+    sq_json_key(j, "pattern");
+    sq_json_string(j, pattern[rep->pattern]);
     sq_json_end_object(j);
 }
 
@@ -80,6 +93,7 @@ static void json_field_summary(sq_json *j, const sq_layout_result *r)
     sq_json_key_int(j, "order", r->field.order);
     sq_json_key_int(j, "triangles", r->field.triangles);
     if (r->field.dofs > 0) sq_json_key_int(j, "dofs", r->field.dofs);
+    if (r->analysis.field.twist != 0.0) sq_json_key_number(j, "twist_deg", SQ_GUIDING_TWIST_DEG);
     sq_json_end_object(j);
 }
 
