@@ -28,6 +28,7 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <BRep_Tool.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TopExp.hxx>
@@ -343,6 +344,9 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
     if (index < 0 || index >= nf)
         return SQ_FAIL(err, SQ_ERR_USAGE, "face %d out of range (%s has %d face%s)", index,
                        model->path.c_str(), nf, nf == 1 ? "" : "s");
+    if (index < (int)model->status.size() && model->status[(size_t)index] == CAD_FACE_BROKEN)
+        return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d: %s", index,
+                       model->reason[(size_t)index].c_str());
     TopoDS_Face face = TopoDS::Face(model->faces(index + 1));
     gp_Pln pln;
     if (!sqcad::face_plane(face, &pln))
@@ -525,6 +529,7 @@ sq_status cad_face_create(const cad_model *model, int index, cad_face **out, sq_
     *out = NULL;
     if (!model) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_create: model is NULL");
     try {
+        OCC_CATCH_SIGNALS
         return face_create(model, index, out, err);
     } catch (const Standard_Failure &e) {
         return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d: OpenCASCADE %s: %s", index,

@@ -3,6 +3,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -131,4 +132,60 @@ void sq_face_info_free(sq_face_info *info)
     if (!info) return;
     free(info->vertices);
     memset(info, 0, sizeof *info);
+}
+
+const char *sq_face_status_name(cad_face_status s)
+{
+    switch (s) {
+    case CAD_FACE_OK: return "ok";
+    case CAD_FACE_HEALED: return "healed";
+    case CAD_FACE_NOT_PLANAR: return "not planar";
+    case CAD_FACE_BROKEN: return "broken";
+    }
+    return "broken";
+}
+
+void sq_heal_text(const cad_heal *h, const char *unit, char *buf, size_t n)
+{
+    const double *p = h->at;
+    if (!strcmp(h->kind, "gap"))
+        snprintf(buf, n, "closed a %.3g %s gap between edges %d and %d of wire %d at (%.6g, %.6g, %.6g)",
+                 h->size, unit, h->edge_a, h->edge_b, h->wire, p[0], p[1], p[2]);
+    else if (!strcmp(h->kind, "connection"))
+        snprintf(buf, n, "joined edges %d and %d of wire %d, their vertices %.3g %s apart, at (%.6g, %.6g, %.6g)",
+                 h->edge_a, h->edge_b, h->wire, h->size, unit, p[0], p[1], p[2]);
+    else if (!strcmp(h->kind, "small edge"))
+        snprintf(buf, n, "merged edge %d of wire %d, %.3g %s long, at (%.6g, %.6g, %.6g)", h->edge_a,
+                 h->wire, h->size, unit, p[0], p[1], p[2]);
+    else
+        snprintf(buf, n, "fixed a %s in wire %d", h->kind, h->wire);
+}
+
+void sq_json_healing(sq_json *j, const cad_model *m, int face)
+{
+    sq_json_key(j, "healing");
+    sq_json_begin_object(j);
+    sq_json_key_number(j, "tolerance", cad_model_heal_tolerance(m));
+    sq_json_key(j, "fixes");
+    sq_json_begin_array(j);
+    cad_heal h;
+    for (int k = 0; cad_model_face_heal(m, face, k, &h) == 0; k++) {
+        sq_json_begin_object(j);
+        sq_json_key_string(j, "kind", h.kind);
+        sq_json_key_int(j, "wire", h.wire);
+        sq_json_key(j, "edges");
+        sq_json_begin_array(j);
+        if (h.edge_a >= 0) sq_json_int(j, h.edge_a);
+        if (h.edge_b >= 0) sq_json_int(j, h.edge_b);
+        sq_json_end_array(j);
+        sq_json_key_number(j, "size", h.size);
+        sq_json_key(j, "at");
+        sq_json_begin_array(j);
+        for (int d = 0; d < 3; d++)
+            sq_json_number(j, h.at[d]);
+        sq_json_end_array(j);
+        sq_json_end_object(j);
+    }
+    sq_json_end_array(j);
+    sq_json_end_object(j);
 }

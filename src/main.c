@@ -81,6 +81,8 @@ int main(int argc, char **argv)
     sq_error_clear(&err);
     /* GSL failures must come back as status codes, not abort the program */
     gsl_set_error_handler_off();
+    /* OpenCASCADE's access violations on hostile files become exceptions */
+    cad_catch_signals();
     /* CHOLMOD's supernodal loops ask OpenMP for 4 threads, a number fixed
      * when it was built (CHOLMOD_OMP_NUM_THREADS), whatever the machine: on
      * small supernodes (the DG guiding field) and 2 cores their barriers
