@@ -37,14 +37,14 @@ static double abs_curvature(double s, void *p)
 /* Adaptive Gauss–Kronrod over the edge: B-spline edges are only piecewise
  * smooth, which fixed rules would integrate to a few digits only. */
 static sq_status integrate_edge(const cad_face *face, int edge, double (*f)(double, void *),
-                                double *value, sq_error *err)
+                                double epsabs, double *value, sq_error *err)
 {
     gsl_integration_workspace *ws = gsl_integration_workspace_alloc(2000);
     if (!ws) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     edge_ctx ctx = {face, edge, SQ_OK, err};
     gsl_function F = {f, &ctx};
     double L = cad_face_edge_length(face, edge), abserr;
-    int rc = gsl_integration_qag(&F, 0.0, L, 1e-14, 1e-13, 2000, GSL_INTEG_GAUSS31, ws, value,
+    int rc = gsl_integration_qag(&F, 0.0, L, epsabs, 1e-13, 2000, GSL_INTEG_GAUSS31, ws, value,
                                  &abserr);
     gsl_integration_workspace_free(ws);
     if (ctx.status != SQ_OK) return ctx.status;
@@ -62,7 +62,7 @@ sq_status sq_edge_turning(const cad_face *face, int edge, double *turning, sq_er
         *turning = 0.0;
         return SQ_OK;
     }
-    return integrate_edge(face, edge, abs_curvature, turning, err);
+    return integrate_edge(face, edge, abs_curvature, 1e-14, turning, err); /* radians */
 }
 
 static void bbox_add(double bb[4], const double p[2])
@@ -88,10 +88,16 @@ sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_erro
     double twice_area = 0.0;
     for (int e = 0; e < ne && st == SQ_OK; e++) {
         double a = 0.0;
-        st = integrate_edge(face, e, green_integrand, &a, err);
+        /* absolute floor of |x dy - y dx| integrated: 1e-14 of the edge's
+         * own scale (length times distance from the origin) below unit
+         * size, so that a face scaled to 1e-9 is integrated as finely */
+        double p0[2], L = cad_face_edge_length(face, e);
+        st = cad_face_edge_eval(face, e, 0.0, p0, NULL, NULL, err);
+        if (st != SQ_OK) break;
+        double scale = L * (L + hypot(p0[0], p0[1]));
+        st = integrate_edge(face, e, green_integrand, 1e-14 * fmin(1.0, scale), &a, err);
         twice_area += a;
         /* Bounding box from a dense sample (exact enough for framing). */
-        double L = cad_face_edge_length(face, e);
         for (int k = 0; k <= 64 && st == SQ_OK; k++) {
             double p[2];
             st = cad_face_edge_eval(face, e, L * k / 64.0, p, NULL, NULL, err);
