@@ -44,7 +44,8 @@ void cad_catch_signals(void);
 typedef struct {
     int heal;              /* 1 (default): heal planar faces within the tolerance */
     double heal_tolerance; /* > 0: the tolerance (file unit); <= 0 (default): the
-                              file's own, capped at 1e-3 of each face's size */
+                              file's own for each face: the largest of the file's
+                              uncertainty and the face's vertex and edge tolerances */
 } cad_read_options;
 
 void cad_read_options_default(cad_read_options *o);
@@ -66,9 +67,9 @@ typedef enum {
  * broken face, else NULL. */
 cad_face_status cad_model_face_status(const cad_model *model, int index, const char **reason);
 
-/* The tolerance healing used (file unit; the largest of the file's
- * uncertainty and its vertex and edge tolerances, or --heal-tolerance),
- * 0 when healing is off. */
+/* The file's healing tolerance (file unit; the largest of the file's
+ * uncertainty and its vertex and edge tolerances: no face heals beyond it,
+ * or the given one), 0 when healing is off. */
 double cad_model_heal_tolerance(const cad_model *model);
 
 /* One defect healed on a face: kind "gap" (between the ends of edges

@@ -7,8 +7,7 @@
 //     ShapeAnalysis_Wire on its edges in the order of travel: gaps between
 //     consecutive 3D curve ends (CheckGap3d), consecutive edges that do not
 //     share their vertex, edges shorter than that precision (CheckSmall),
-//     degenerated edges a planar face cannot have (CheckDegenerated), a wire
-//     crossing itself (CheckSelfIntersection);
+//     degenerated edges a planar face cannot have (CheckDegenerated);
 //  2. no defect: the face is left exactly as read (examples stay
 //     byte-identical);
 //  3. a defect larger than the healing tolerance: the face is broken, with
@@ -49,14 +48,22 @@
 namespace {
 
 // Largest tolerance of the face's edges: the precision at which the face is
-// taken as it is (cad_face_create's closure test uses the same tolerances),
-// unless capped by the face's size.
+// taken as it is (cad_face_create's closure test uses the same tolerances).
 double face_precision(const TopoDS_Face &face)
 {
     double p = 0;
     for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next())
         p = std::max(p, BRep_Tool::Tolerance(TopoDS::Edge(ex.Current())));
     return p;
+}
+
+// Largest tolerance of the face's vertices and edges.
+double face_tolerance(const TopoDS_Face &face)
+{
+    double t = face_precision(face);
+    for (TopExp_Explorer ex(face, TopAbs_VERTEX); ex.More(); ex.Next())
+        t = std::max(t, BRep_Tool::Tolerance(TopoDS::Vertex(ex.Current())));
+    return t;
 }
 
 void midpoint(const gp_Pnt &a, const gp_Pnt &b, double at[3])
@@ -92,7 +99,6 @@ void analyse_wire(const TopoDS_Wire &wire, const TopoDS_Face &face, int w, doubl
         order.FixReorder();
         wd = order.WireData();
     }
-    const double nowhere[3] = {0, 0, 0};
     ShapeAnalysis_Wire saw(wd, face, prec);
     const int n = wd->NbEdges();
     for (int i = 1; i <= n; ++i) {
@@ -124,8 +130,6 @@ void analyse_wire(const TopoDS_Wire &wire, const TopoDS_Face &face, int w, doubl
         if (!BRep_Tool::Degenerated(e) && saw.CheckDegenerated(i))
             out.push_back(record("degenerated edge", w, i - 1, -1, 0, at));
     }
-    if (n > 1 && saw.CheckSelfIntersection())
-        out.push_back(record("self-intersection", w, -1, -1, 0, nowhere));
 }
 
 std::vector<sqcad::heal_record> analyse_face(const TopoDS_Face &face, double prec)
@@ -138,12 +142,12 @@ std::vector<sqcad::heal_record> analyse_face(const TopoDS_Face &face, double pre
     return out;
 }
 
-// Defects healing cannot be sized against the tolerance (no size), or that
-// are larger than it: the first one, or NULL.
+// The first defect healing cannot size against the tolerance, or larger
+// than it; NULL if none.
 const sqcad::heal_record *beyond(const std::vector<sqcad::heal_record> &d, double tol)
 {
     for (const auto &r : d)
-        if (r.kind == "self-intersection" || r.kind == "degenerated edge" || r.size > tol) return &r;
+        if (r.kind == "degenerated edge" || r.size > tol) return &r;
     return NULL;
 }
 
@@ -151,9 +155,7 @@ const sqcad::heal_record *beyond(const std::vector<sqcad::heal_record> &d, doubl
 std::string describe(const sqcad::heal_record &r, const char *unit)
 {
     char buf[400];
-    if (r.kind == "self-intersection")
-        std::snprintf(buf, sizeof buf, "%s of wire %d", r.kind.c_str(), r.wire);
-    else if (r.edge_b >= 0)
+    if (r.edge_b >= 0)
         std::snprintf(buf, sizeof buf, "%s of %.3g %s between edges %d and %d of wire %d at (%.6g, %.6g, %.6g)",
                       r.kind.c_str(), r.size, unit, r.edge_a, r.edge_b, r.wire, r.at[0], r.at[1],
                       r.at[2]);
@@ -201,15 +203,15 @@ TopoDS_Face fix_face(const TopoDS_Face &face, double prec, double tol)
 void heal_face(cad_model *m, int i, double file_tol, bool given)
 {
     const TopoDS_Face face = TopoDS::Face(m->faces(i + 1));
-    // The file's tolerances, unless given, are capped at 1e-3 of the face: a
-    // file's uncertainty written for parts of metres must not swallow a
-    // face of micrometres whole (a face scaled to 1e-9 keeps tolerances of
-    // 1e-7 from its writer).
-    const double cap = 1e-3 * sqcad::face_size(face);
+    // Gaps are sought down to 1e-8 of the face's size even where its
+    // tolerances are larger (a face scaled to 1e-9 keeps the 1e-7 of its
+    // writer), so that a gap the tolerances hide is still closed and said.
     const double prec = std::min(face_precision(face), 1e-8 * sqcad::face_size(face));
     std::vector<sqcad::heal_record> d = analyse_face(face, prec);
     if (d.empty()) return;
-    const double tol = given ? file_tol : std::min(file_tol, cap);
+    // The file's own tolerance for this face: its uncertainty or the face's
+    // vertex and edge tolerances, whichever is larger.
+    const double tol = given ? file_tol : std::max(m->uncertainty, face_tolerance(face));
     if (const sqcad::heal_record *r = beyond(d, std::max(tol, prec))) {
         char buf[600];
         if (r->size > 0)
