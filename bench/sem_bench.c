@@ -223,7 +223,7 @@ int main(int argc, char **argv)
     cad_face *f = NULL;
     int face;
     const char *note;
-    if (sq_cli_open_face(path, -1, &m, &f, &face, &note, &err))
+    if (sq_cli_open_face(path, -1, NULL, &m, &f, &face, &note, &err))
         return fprintf(stderr, "sem-bench: %s\n", err.msg), 1;
     const char *base = strrchr(path, '/');
     base = base ? base + 1 : path;

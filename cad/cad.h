@@ -34,6 +34,60 @@ typedef struct cad_model cad_model; /* opaque: the shape read from a file */
 sq_status cad_model_read(const char *path, cad_model **out, sq_error *err);
 void cad_model_free(cad_model **model); /* NULL-safe, NULLs *model */
 
+/* Let OpenCASCADE turn access violations inside its code into exceptions
+ * (OSD::SetSignal, process-wide, floating-point traps left off): a file
+ * with a dangling reference is then refused instead of crashing.  Call
+ * once at program start, before any cad_ function. */
+void cad_catch_signals(void);
+
+/* How cad_model_read_with reads: healing (docs/healing.md). */
+typedef struct {
+    int heal;              /* 1 (default): heal planar faces within the tolerance */
+    double heal_tolerance; /* > 0: the tolerance (file unit); <= 0 (default): the
+                              file's own for each face: the largest of the file's
+                              uncertainty and the face's vertex and edge tolerances */
+} cad_read_options;
+
+void cad_read_options_default(cad_read_options *o);
+
+/* cad_model_read with options.  Every OpenCASCADE failure, NaN or infinite
+ * coordinates included, is SQ_ERR_INPUT with one line; a face that cannot
+ * be healed does not fail the read: it is CAD_FACE_BROKEN. */
+sq_status cad_model_read_with(const char *path, const cad_read_options *opts, cad_model **out,
+                              sq_error *err);
+
+typedef enum {
+    CAD_FACE_OK = 0,     /* planar, taken as read */
+    CAD_FACE_HEALED,     /* planar, defects healed within the tolerance */
+    CAD_FACE_NOT_PLANAR, /* not meshable by semquad */
+    CAD_FACE_BROKEN      /* planar with a defect beyond the tolerance */
+} cad_face_status;
+
+/* Status of face `index`; *reason (may be NULL) gets a one-line reason for a
+ * broken face, else NULL. */
+cad_face_status cad_model_face_status(const cad_model *model, int index, const char **reason);
+
+/* The file's healing tolerance (file unit; the largest of the file's
+ * uncertainty and its vertex and edge tolerances: no face heals beyond it,
+ * or the given one), 0 when healing is off. */
+double cad_model_heal_tolerance(const cad_model *model);
+
+/* One defect healed on a face: kind "gap" (between the ends of edges
+ * edge_a and edge_b of a wire, size its width), "connection" (consecutive
+ * edges not sharing their vertex, size the vertices' distance), "small
+ * edge" (edge_a, size its length), "degenerated edge" (edge_a), or
+ * "self-intersection" (the wire's); at: where, in the file's 3D coordinates.  Wires and edges are numbered as in the file. */
+typedef struct {
+    const char *kind;
+    int wire, edge_a, edge_b; /* -1: none */
+    double size;
+    double at[3];
+} cad_heal;
+
+int cad_model_face_num_heals(const cad_model *model, int index);
+/* Record k of face `index`; 0 on success, -1 if out of range. */
+int cad_model_face_heal(const cad_model *model, int index, int k, cad_heal *out);
+
 /* Length unit of the file as written: "mm", "m", "cm", "inch", "foot",
  * "micrometre" or "unknown" (BREP files carry no unit). */
 const char *cad_model_unit(const cad_model *model);
@@ -44,6 +98,10 @@ int cad_model_num_faces(const cad_model *model);
  * "torus", "bezier", "bspline", "revolution", "extrusion", "offset",
  * "other".  NULL if the index is out of range. */
 const char *cad_model_face_surface(const cad_model *model, int index);
+
+/* 1 if face `index` lies in a plane (within 1e-7 of its size: a B-spline
+ * surface may), else 0. */
+int cad_model_face_planar(const cad_model *model, int index);
 
 /* Index of the default face: the only planar face if there is exactly one,
  * else 0 (and *note is set to a one-line explanation, else to NULL). */
@@ -76,7 +134,8 @@ const char *cad_edge_type_name(cad_edge_type type); /* "line", "circle", ... */
 
 /* Extract face `index` of the model.  SQ_ERR_USAGE if the index is out of
  * range; SQ_ERR_GEOMETRY if the face is not planar (the message names its
- * surface type) or has a degenerate boundary. */
+ * surface type), is broken (the healing's reason) or has a degenerate
+ * boundary. */
 sq_status cad_face_create(const cad_model *model, int index, cad_face **out, sq_error *err);
 void cad_face_free(cad_face **face); /* NULL-safe, NULLs *face */
 

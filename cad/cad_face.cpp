@@ -28,6 +28,7 @@
 #include <BRepAdaptor_Curve.hxx>
 #include <BRepTools.hxx>
 #include <BRepTools_WireExplorer.hxx>
+#include <Standard_ErrorHandler.hxx>
 #include <BRep_Tool.hxx>
 #include <TColStd_Array1OfReal.hxx>
 #include <TopExp.hxx>
@@ -323,6 +324,26 @@ struct cad_face {
             a += edge_area(edges[(size_t)(loop_first[(size_t)l] + k)]);
         return a;
     }
+    // Loop l becomes loop 0, the others keep their order.
+    void make_first(int l)
+    {
+        std::vector<Edge> e;
+        std::vector<int> first, n;
+        for (int k : {l, -1})
+            for (int j = 0; j < (int)loop_first.size(); ++j) {
+                if ((k >= 0) != (j == l)) continue;
+                first.push_back((int)e.size());
+                n.push_back(loop_n[(size_t)j]);
+                for (int i = 0; i < loop_n[(size_t)j]; ++i)
+                    e.push_back(std::move(edges[(size_t)(loop_first[(size_t)j] + i)]));
+            }
+        edges.swap(e);
+        loop_first.swap(first);
+        loop_n.swap(n);
+        for (int j = 0; j < (int)loop_first.size(); ++j)
+            for (int i = 0; i < loop_n[(size_t)j]; ++i)
+                edges[(size_t)(loop_first[(size_t)j] + i)].loop = j;
+    }
     void reverse_loop(int l)
     {
         auto b = edges.begin() + loop_first[(size_t)l];
@@ -343,6 +364,9 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
     if (index < 0 || index >= nf)
         return SQ_FAIL(err, SQ_ERR_USAGE, "face %d out of range (%s has %d face%s)", index,
                        model->path.c_str(), nf, nf == 1 ? "" : "s");
+    if (index < (int)model->status.size() && model->status[(size_t)index] == CAD_FACE_BROKEN)
+        return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d: %s", index,
+                       model->reason[(size_t)index].c_str());
     TopoDS_Face face = TopoDS::Face(model->faces(index + 1));
     gp_Pln pln;
     if (!sqcad::face_plane(face, &pln))
@@ -368,14 +392,16 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
     f->X[0] = x.X(), f->X[1] = x.Y(), f->X[2] = x.Z();
     f->Y[0] = y.X(), f->Y[1] = y.Y(), f->Y[2] = y.Z();
 
-    // Wires: the outer one first.
+    // Wires: OpenCASCADE's outer one first (checked below by area: its
+    // choice compares boxes enlarged by the tolerances, wrong on faces not
+    // much larger than their tolerances).
     TopoDS_Wire outer = BRepTools::OuterWire(face);
-    if (outer.IsNull())
-        return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d has no outer boundary", index);
-    std::vector<TopoDS_Wire> wires(1, outer);
+    std::vector<TopoDS_Wire> wires;
+    if (!outer.IsNull()) wires.push_back(outer);
     for (TopoDS_Iterator it(face); it.More(); it.Next())
         if (it.Value().ShapeType() == TopAbs_WIRE && !it.Value().IsSame(outer))
             wires.push_back(TopoDS::Wire(it.Value()));
+    if (wires.empty()) return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d has no outer boundary", index);
 
     double tol_vertex = 0;
     for (size_t w = 0; w < wires.size(); ++w) {
@@ -445,6 +471,11 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
                 f->edges[(size_t)(f->loop_first[(size_t)l] + k)].loop = l;
     }
 
+    // The outer loop encloses the largest area.
+    int lo = 0;
+    for (int l = 1; l < nl; ++l)
+        if (std::fabs(f->loop_area(l)) > std::fabs(f->loop_area(lo))) lo = l;
+    if (lo != 0) f->make_first(lo);
     // Orientation: outer counter-clockwise, holes clockwise.
     double aout = f->loop_area(0);
     if (!(std::fabs(aout) > 0))
@@ -525,6 +556,7 @@ sq_status cad_face_create(const cad_model *model, int index, cad_face **out, sq_
     *out = NULL;
     if (!model) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_face_create: model is NULL");
     try {
+        OCC_CATCH_SIGNALS
         return face_create(model, index, out, err);
     } catch (const Standard_Failure &e) {
         return SQ_FAIL(err, SQ_ERR_GEOMETRY, "face %d: OpenCASCADE %s: %s", index,

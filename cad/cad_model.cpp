@@ -11,6 +11,21 @@
 #include "cad_private.hxx"
 
 #include <BRepAdaptor_Surface.hxx>
+#include <BRepBndLib.hxx>
+#include <BRep_CurveRepresentation.hxx>
+#include <BRep_GCurve.hxx>
+#include <BRep_TEdge.hxx>
+#include <Bnd_Box.hxx>
+#include <Geom2d_Curve.hxx>
+#include <Geom_Curve.hxx>
+#include <Interface_Check.hxx>
+#include <Interface_CheckIterator.hxx>
+#include <OSD.hxx>
+#include <StepBasic_UncertaintyMeasureWithUnit.hxx>
+#include <StepData_StepModel.hxx>
+#include <Standard_ErrorHandler.hxx>
+#include <TopExp_Explorer.hxx>
+#include <XSControl_WorkSession.hxx>
 #include <BRepBuilderAPI_Transform.hxx>
 #include <BRepTools.hxx>
 #include <BRep_Builder.hxx>
@@ -147,11 +162,26 @@ sq_status read_step(const char *path, cad_model *m, sq_error *err)
     } else {
         m->unit = "mm"; // unknown unit: OpenCASCADE's millimetres
     }
+    Handle(StepData_StepModel) model = reader.StepModel();
+    for (int i = 1; !model.IsNull() && i <= model->NbEntities(); ++i) {
+        Handle(StepBasic_UncertaintyMeasureWithUnit) u =
+            Handle(StepBasic_UncertaintyMeasureWithUnit)::DownCast(model->Value(i));
+        if (!u.IsNull() && std::isfinite(u->ValueComponent()))
+            m->uncertainty = std::max(m->uncertainty, u->ValueComponent());
+    }
     if (reader.NbRootsForTransfer() <= 0)
         return SQ_FAIL(err, SQ_ERR_INPUT, "%s: STEP file holds no shape", path);
     reader.TransferRoots();
-    if (reader.NbShapes() <= 0)
-        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: no shape could be read from the STEP file", path);
+    if (reader.NbShapes() <= 0) {
+        // The reader's own first failure says why (an unresolved reference,
+        // an unknown entity type, ...).
+        std::string why;
+        Interface_CheckIterator checks = reader.WS()->ModelCheckList();
+        for (checks.Start(); checks.More() && why.empty(); checks.Next())
+            if (checks.Value()->HasFailed()) why = checks.Value()->CFail(1);
+        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: no shape could be read from the STEP file%s%s%s",
+                       path, why.empty() ? "" : " (", why.c_str(), why.empty() ? "" : ")");
+    }
     m->shape = reader.OneShape();
     return SQ_OK;
 }
@@ -201,7 +231,89 @@ sq_status read_brep(const char *path, cad_model *m, sq_error *err)
     return SQ_OK;
 }
 
-sq_status model_read(const char *path, cad_model **out, sq_error *err)
+bool finite(const gp_Pnt &p)
+{
+    return std::isfinite(p.X()) && std::isfinite(p.Y()) && std::isfinite(p.Z());
+}
+
+bool finite_curve(const Handle(Geom_Curve) &c, double f, double l)
+{
+    return c.IsNull() || (std::isfinite(f) && std::isfinite(l) && finite(c->Value(f)) &&
+                          finite(c->Value(0.5 * (f + l))) && finite(c->Value(l)));
+}
+
+bool finite_pcurve(const Handle(Geom2d_Curve) &c, double f, double l)
+{
+    if (c.IsNull()) return true;
+    if (!std::isfinite(f) || !std::isfinite(l)) return false;
+    for (double u : {f, 0.5 * (f + l), l}) {
+        gp_Pnt2d p = c->Value(u);
+        if (!std::isfinite(p.X()) || !std::isfinite(p.Y())) return false;
+    }
+    return true;
+}
+
+// True if an edge's 3D curve and every p-curve it holds are finite at the
+// ends and middle of their ranges.
+bool finite_edge(const TopoDS_Edge &e)
+{
+    const Handle(BRep_TEdge) te = Handle(BRep_TEdge)::DownCast(e.TShape());
+    if (te.IsNull()) return true;
+    for (BRep_ListIteratorOfListOfCurveRepresentation it(te->Curves()); it.More(); it.Next()) {
+        const Handle(BRep_GCurve) gc = Handle(BRep_GCurve)::DownCast(it.Value());
+        if (gc.IsNull()) continue;
+        double f, l;
+        gc->Range(f, l);
+        if (gc->IsCurve3D() && !finite_curve(gc->Curve3D(), f, l)) return false;
+        if (gc->IsCurveOnSurface() && !finite_pcurve(gc->PCurve(), f, l)) return false;
+    }
+    return true;
+}
+
+// Every point, curve and plane of the shape is finite: OpenCASCADE loops
+// forever on NaN parameters (a NaN coordinate hung `info`), so nothing may
+// touch the geometry before this check.
+sq_status check_finite(const TopoDS_Shape &shape, const char *path, sq_error *err)
+{
+    const char *what = NULL;
+    for (TopExp_Explorer ex(shape, TopAbs_VERTEX); ex.More() && !what; ex.Next())
+        if (!finite(BRep_Tool::Pnt(TopoDS::Vertex(ex.Current())))) what = "point";
+    for (TopExp_Explorer ex(shape, TopAbs_EDGE); ex.More() && !what; ex.Next())
+        if (!finite_edge(TopoDS::Edge(ex.Current()))) what = "curve";
+    for (TopExp_Explorer ex(shape, TopAbs_FACE); ex.More() && !what; ex.Next()) {
+        TopLoc_Location loc;
+        Handle(Geom_Surface) srf = BRep_Tool::Surface(TopoDS::Face(ex.Current()), loc);
+        double u0, u1, v0, v1;
+        if (srf.IsNull()) continue;
+        srf->Bounds(u0, u1, v0, v1);
+        double u = std::isfinite(u0) && std::isfinite(u1) ? 0.5 * (u0 + u1) : 0.0;
+        double v = std::isfinite(v0) && std::isfinite(v1) ? 0.5 * (v0 + v1) : 0.0;
+        gp_Pnt p;
+        gp_Vec du, dv;
+        srf->D1(u, v, p, du, dv);
+        if (!finite(p) || !finite(gp_Pnt(du.XYZ())) || !finite(gp_Pnt(dv.XYZ()))) what = "surface";
+    }
+    if (what)
+        return SQ_FAIL(err, SQ_ERR_INPUT, "%s: a %s has a NaN or infinite coordinate", path, what);
+    return SQ_OK;
+}
+
+// Healing tolerance from the options: the given one, else the largest of
+// the file's uncertainty and the shape's vertex and edge tolerances.
+double heal_tolerance(const cad_model *m, const cad_read_options *o)
+{
+    if (!o->heal) return 0;
+    if (o->heal_tolerance > 0) return o->heal_tolerance;
+    double t = m->uncertainty;
+    for (TopExp_Explorer ex(m->shape, TopAbs_VERTEX); ex.More(); ex.Next())
+        t = std::max(t, BRep_Tool::Tolerance(TopoDS::Vertex(ex.Current())));
+    for (TopExp_Explorer ex(m->shape, TopAbs_EDGE); ex.More(); ex.Next())
+        t = std::max(t, BRep_Tool::Tolerance(TopoDS::Edge(ex.Current())));
+    return t;
+}
+
+sq_status model_read(const char *path, const cad_read_options *opts, cad_model **out,
+                     sq_error *err)
 {
     std::string ext = extension(path);
     enum { STEP, IGES, BREP } kind;
@@ -234,6 +346,7 @@ sq_status model_read(const char *path, cad_model **out, sq_error *err)
         if (s != SQ_OK) return s;
     }
     if (m->shape.IsNull()) return SQ_FAIL(err, SQ_ERR_INPUT, "%s: no shape in the file", path);
+    SQ_TRY(check_finite(m->shape, path, err));
     TopExp::MapShapes(m->shape, TopAbs_FACE, m->faces);
     int nf = m->faces.Extent();
     if (nf <= 0) return SQ_FAIL(err, SQ_ERR_INPUT, "%s: the file holds no face", path);
@@ -263,6 +376,8 @@ sq_status model_read(const char *path, cad_model **out, sq_error *err)
                           nplanar, nf);
         m->note = buf;
     }
+    m->heal_tol = heal_tolerance(m.get(), opts);
+    sqcad::heal_model(m.get(), m->heal_tol, opts->heal_tolerance > 0);
     *out = m.release();
     return SQ_OK;
 }
@@ -289,6 +404,16 @@ const char *surface_name(const TopoDS_Face &face)
     }
 }
 
+double face_size(const TopoDS_Face &face)
+{
+    Bnd_Box box;
+    BRepBndLib::AddOptimal(face, box, Standard_False, Standard_False); // no tolerance added
+    if (box.IsVoid()) return 0;
+    double x0, y0, z0, x1, y1, z1;
+    box.Get(x0, y0, z0, x1, y1, z1);
+    return std::max(x1 - x0, std::max(y1 - y0, z1 - z0));
+}
+
 bool face_plane(const TopoDS_Face &face, gp_Pln *pln)
 {
     BRepAdaptor_Surface as(face, Standard_True);
@@ -302,7 +427,7 @@ bool face_plane(const TopoDS_Face &face, gp_Pln *pln)
         TopLoc_Location loc;
         Handle(Geom_Surface) surf = BRep_Tool::Surface(face, loc);
         if (surf.IsNull()) return false;
-        GeomLib_IsPlanarSurface isp(surf, 1e-7);
+        GeomLib_IsPlanarSurface isp(surf, 1e-7 * face_size(face));
         if (!isp.IsPlanar()) return false;
         if (!pln) return true;
         p = isp.Plan().Transformed(loc.Transformation());
@@ -329,13 +454,31 @@ bool face_plane(const TopoDS_Face &face, gp_Pln *pln)
 
 extern "C" {
 
+void cad_catch_signals(void) { OSD::SetSignal(OSD_SignalMode_Set, Standard_False); }
+
+void cad_read_options_default(cad_read_options *o)
+{
+    o->heal = 1;
+    o->heal_tolerance = 0;
+}
+
 sq_status cad_model_read(const char *path, cad_model **out, sq_error *err)
+{
+    cad_read_options o;
+    cad_read_options_default(&o);
+    return cad_model_read_with(path, &o, out, err);
+}
+
+sq_status cad_model_read_with(const char *path, const cad_read_options *opts, cad_model **out,
+                              sq_error *err)
 {
     if (!out) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_model_read: out is NULL");
     *out = NULL;
     if (!path || !*path) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_model_read: no file name");
+    if (!opts) return SQ_FAIL(err, SQ_ERR_USAGE, "cad_model_read: no options");
     try {
-        return model_read(path, out, err);
+        OCC_CATCH_SIGNALS
+        return model_read(path, opts, out, err);
     }
     catch (const Standard_Failure &e) {
         return SQ_FAIL(err, SQ_ERR_INPUT, "%s: cannot be read (OpenCASCADE %s: %s)", path,
@@ -372,6 +515,43 @@ const char *cad_model_face_surface(const cad_model *model, int index)
     return model->surface[(size_t)index].c_str();
 }
 
+int cad_model_face_planar(const cad_model *model, int index)
+{
+    if (!model || index < 0 || index >= (int)model->planar.size()) return 0;
+    return model->planar[(size_t)index];
+}
+
+cad_face_status cad_model_face_status(const cad_model *model, int index, const char **reason)
+{
+    if (reason) *reason = NULL;
+    if (!model || index < 0 || index >= (int)model->status.size()) return CAD_FACE_BROKEN;
+    if (reason && model->status[(size_t)index] == CAD_FACE_BROKEN)
+        *reason = model->reason[(size_t)index].c_str();
+    return (cad_face_status)model->status[(size_t)index];
+}
+
+double cad_model_heal_tolerance(const cad_model *model) { return model ? model->heal_tol : 0; }
+
+int cad_model_face_num_heals(const cad_model *model, int index)
+{
+    if (!model || index < 0 || index >= (int)model->heals.size()) return 0;
+    return (int)model->heals[(size_t)index].size();
+}
+
+int cad_model_face_heal(const cad_model *model, int index, int k, cad_heal *out)
+{
+    if (!out || k < 0 || k >= cad_model_face_num_heals(model, index)) return -1;
+    const sqcad::heal_record &r = model->heals[(size_t)index][(size_t)k];
+    out->kind = r.kind.c_str();
+    out->wire = r.wire;
+    out->edge_a = r.edge_a;
+    out->edge_b = r.edge_b;
+    out->size = r.size;
+    for (int d = 0; d < 3; ++d)
+        out->at[d] = r.at[d];
+    return 0;
+}
+
 sq_status cad_model_transform(cad_model *model, const double axis[3], double angle, double scale,
                               const double t[3], sq_error *err)
 {
@@ -384,8 +564,10 @@ sq_status cad_model_transform(cad_model *model, const double axis[3], double ang
         tr.SetTranslation(gp_Vec(t[0], t[1], t[2]));
         gp_Trsf all = tr * scl * rot;
         model->shape = BRepBuilderAPI_Transform(model->shape, all, Standard_True).Shape();
-        model->faces.Clear();
-        TopExp::MapShapes(model->shape, TopAbs_FACE, model->faces);
+        // face by face: the healed faces replace those of the shape
+        for (int i = 1; i <= model->faces.Extent(); ++i)
+            model->faces.Substitute(
+                i, BRepBuilderAPI_Transform(model->faces(i), all, Standard_True).Shape());
         return SQ_OK;
     }
     SQCAD_CATCH(err)

@@ -16,6 +16,17 @@
 #include <string>
 #include <vector>
 
+namespace sqcad {
+// One defect found on a face, healed or not (cad_heal.cpp).
+struct heal_record {
+    std::string kind;   // "gap", "connection", "small edge", "order", ...
+    int wire = 0;       // wire of the face, in the file's order
+    int edge_a = -1, edge_b = -1; // edges of that wire (-1: none)
+    double size = 0;    // gap width or edge length, file unit (0: no size)
+    double at[3] = {0, 0, 0};
+};
+} // namespace sqcad
+
 struct cad_model {
     TopoDS_Shape shape;
     TopTools_IndexedMapOfShape faces; // 1-based inside OCCT
@@ -25,6 +36,11 @@ struct cad_model {
     std::vector<int> planar;          // per face, 1 if planar
     int default_face = 0;
     std::string note; // empty: no note
+    double uncertainty = 0; // the file's own (STEP), 0 if none
+    double heal_tol = 0;    // tolerance healing used, 0: healing off
+    std::vector<int> status; // per face, a cad_face_status
+    std::vector<std::string> reason; // per face, why it is broken
+    std::vector<std::vector<sqcad::heal_record>> heals; // per face, what was healed
 };
 
 namespace sqcad {
@@ -35,6 +51,14 @@ const char *surface_name(const TopoDS_Face &face);
 // True if the face lies in a plane; then *pln is that plane with its axis
 // along the face's outward normal (the face orientation applied).
 bool face_plane(const TopoDS_Face &face, gp_Pln *pln);
+
+// Longest side of the face's bounding box (geometry only, no triangulation).
+double face_size(const TopoDS_Face &face);
+
+// Fill m->status, reason and heals; heal the planar faces whose defects
+// are within tol (given: tol is the user's, not capped by the face's size);
+// tol <= 0: no healing, every planar face is ok.
+void heal_model(cad_model *m, double tol, bool given);
 
 } // namespace sqcad
 

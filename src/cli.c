@@ -1,7 +1,9 @@
 #include "cli.h"
+#include "face_info.h"
 
 #include <errno.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -73,6 +75,7 @@ void sq_cli_args_init(sq_cli_args *a)
 {
     memset(a, 0, sizeof *a);
     a->face = -1;
+    cad_read_options_default(&a->read);
 }
 
 sq_status sq_cli_take(const char *cmd, int argc, char **argv, int *i, sq_cli_args *a, int *taken,
@@ -87,6 +90,14 @@ sq_status sq_cli_take(const char *cmd, int argc, char **argv, int *i, sq_cli_arg
     if (!strcmp(o, "-o") || !strcmp(o, "--output"))
         return sq_cli_value(argc, argv, i, &a->output, err);
     if (!strcmp(o, "--svg")) return sq_cli_value(argc, argv, i, &a->svg, err);
+    if (!strcmp(o, "--no-heal")) {
+        a->read.heal = 0;
+        return SQ_OK;
+    }
+    if (!strcmp(o, "--heal-tolerance")) {
+        SQ_TRY(sq_cli_value(argc, argv, i, &val, err));
+        return sq_cli_double(o, val, 1e-300, 1e300, &a->read.heal_tolerance, err);
+    }
     if (!strcmp(o, "--report")) return sq_cli_value(argc, argv, i, &a->report, err);
     if (!strcmp(o, "-q") || !strcmp(o, "--quiet")) {
         a->quiet = 1;
@@ -111,11 +122,14 @@ sq_status sq_cli_need_input(const char *cmd, const sq_cli_args *a, sq_error *err
     return a->input ? SQ_OK : SQ_FAIL(err, SQ_ERR_USAGE, "%s: missing input file", cmd);
 }
 
-sq_status sq_cli_open_face(const char *path, int face, cad_model **model, cad_face **cface,
-                           int *face_index, const char **note, sq_error *err)
+sq_status sq_cli_open_face(const char *path, int face, const cad_read_options *ro,
+                           cad_model **model, cad_face **cface, int *face_index, const char **note,
+                           sq_error *err)
 {
     *note = NULL;
-    SQ_TRY(cad_model_read(path, model, err));
+    cad_read_options def;
+    cad_read_options_default(&def);
+    SQ_TRY(cad_model_read_with(path, ro ? ro : &def, model, err));
     int n = cad_model_num_faces(*model);
     if (face < 0) face = cad_model_default_face(*model, note);
     if (face >= n) {
@@ -127,4 +141,20 @@ sq_status sq_cli_open_face(const char *path, int face, cad_model **model, cad_fa
     sq_status st = cad_face_create(*model, face, cface, err);
     if (st != SQ_OK) cad_model_free(model);
     return st;
+}
+
+int sq_cli_heal_note(const cad_model *m, int face, char *buf, size_t n)
+{
+    cad_heal h;
+    buf[0] = '\0';
+    if (cad_model_face_heal(m, face, 0, &h) != 0) return 0;
+    const char *unit = cad_model_unit(m);
+    size_t len = (size_t)snprintf(buf, n, "face %d healed within %.3g %s: ", face,
+                                  cad_model_heal_tolerance(m), unit);
+    for (int k = 0; cad_model_face_heal(m, face, k, &h) == 0 && len < n; k++) {
+        char one[256];
+        sq_heal_text(&h, unit, one, sizeof one);
+        len += (size_t)snprintf(buf + len, n - len, "%s%s", k ? "; " : "", one);
+    }
+    return 1;
 }

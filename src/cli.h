@@ -29,6 +29,7 @@ typedef struct {
     const char *output; /* -o F, --output F */
     const char *svg;    /* --svg F */
     const char *report; /* --report F */
+    cad_read_options read; /* --no-heal, --heal-tolerance T */
 } sq_cli_args;
 
 void sq_cli_args_init(sq_cli_args *a);
@@ -44,10 +45,16 @@ sq_status sq_cli_take(const char *cmd, int argc, char **argv, int *i, sq_cli_arg
 sq_status sq_cli_unknown(const char *cmd, const char *opt, sq_error *err);
 sq_status sq_cli_need_input(const char *cmd, const sq_cli_args *a, sq_error *err);
 
-/* Read `path` and open face `face` (-1: the default face; *note set when
- * the choice needs saying).  On success the caller frees both. */
-sq_status sq_cli_open_face(const char *path, int face, cad_model **model, cad_face **cface,
-                           int *face_index, const char **note, sq_error *err);
+/* Read `path` with options ro (NULL: the defaults) and open face `face`
+ * (-1: the default face; *note set when the choice needs saying).  On
+ * success the caller frees both. */
+sq_status sq_cli_open_face(const char *path, int face, const cad_read_options *ro,
+                           cad_model **model, cad_face **cface, int *face_index, const char **note,
+                           sq_error *err);
+
+/* The healing summary of face `face` in one line ("face 2 healed within
+ * 0.0001 mm: closed a ... gap ...; ..."); 0 (buf empty) if it needed none. */
+int sq_cli_heal_note(const cad_model *m, int face, char *buf, size_t n);
 
 /* Subcommands: return an sq_status, print errors through err. */
 sq_status sq_cmd_info(int argc, char **argv, sq_error *err);

@@ -138,7 +138,7 @@ sq_status sq_cmd_converge(int argc, char **argv, sq_error *err)
     cad_model *m = NULL;
     cad_face *f = NULL;
     const char *note;
-    SQ_TRY(sq_cli_open_face(path, face, &m, &f, &face, &note, err));
+    SQ_TRY(sq_cli_open_face(path, face, NULL, &m, &f, &face, &note, err));
     if (note && !quiet) fprintf(stderr, "semquad: note: %s\n", note);
     sq_converge_result r;
     sq_status st = sq_converge_study(f, &opt, &r, err);

@@ -1,4 +1,6 @@
-/* semquad info FILE [--face N] [--json]: what a CAD file holds. */
+/* semquad info FILE [--face N] [--json] [--no-heal] [--heal-tolerance T] [-q]:
+ * what a CAD file holds, every face with its status (ok, healed, not
+ * planar, broken: reason); a broken face does not stop the listing. */
 #include "cli.h"
 #include "face_info.h"
 #include "json_writer.h"
@@ -10,7 +12,10 @@
 typedef struct {
     int index;
     const char *surface;
-    cad_face *face; /* NULL for a non-planar face */
+    cad_face_status status;
+    const char *reason; /* broken: why (points into the model or into msg) */
+    char msg[512];      /* the reason when cad_face_create refused the face */
+    cad_face *face;     /* NULL unless ok or healed */
     sq_face_info info;
 } face_entry;
 
@@ -19,14 +24,21 @@ static void print_text(const char *path, const cad_model *m, const face_entry *f
     int total = cad_model_num_faces(m);
     printf("%s: %d face%s, unit %s\n", path, total, total == 1 ? "" : "s", cad_model_unit(m));
     for (int k = 0; k < nf; k++) {
-        printf("face %d: %s", f[k].index, f[k].surface);
+        printf("face %d: %s, %s", f[k].index, f[k].surface, sq_face_status_name(f[k].status));
         if (!f[k].face) {
-            printf(" (not supported: semquad meshes planar faces)\n");
+            if (f[k].status == CAD_FACE_BROKEN) printf(": %s", f[k].reason);
+            printf("\n");
             continue;
         }
         const sq_face_info *in = &f[k].info;
         printf(", area %.10g, chi %d, bbox [%g, %g] x [%g, %g]\n", in->area, in->chi, in->bbox[0],
                in->bbox[2], in->bbox[1], in->bbox[3]);
+        cad_heal h;
+        for (int r = 0; cad_model_face_heal(m, f[k].index, r, &h) == 0; r++) {
+            char line[256];
+            sq_heal_text(&h, cad_model_unit(m), line, sizeof line);
+            printf("  healed: %s\n", line);
+        }
         for (int l = 0; l < in->nloops; l++) {
             int first = cad_face_loop_first_edge(f[k].face, l);
             int n = cad_face_loop_num_edges(f[k].face, l);
@@ -54,6 +66,7 @@ static void print_json(const char *path, const cad_model *m, const face_entry *f
     sq_json_string(&j, path);
     sq_json_key(&j, "unit");
     sq_json_string(&j, cad_model_unit(m));
+    sq_json_key_number(&j, "heal_tolerance", cad_model_heal_tolerance(m));
     sq_json_key(&j, "faces");
     sq_json_begin_array(&j);
     for (int k = 0; k < nf; k++) {
@@ -62,7 +75,10 @@ static void print_json(const char *path, const cad_model *m, const face_entry *f
         sq_json_int(&j, f[k].index);
         sq_json_key(&j, "surface");
         sq_json_string(&j, f[k].surface);
+        sq_json_key_string(&j, "status", sq_face_status_name(f[k].status));
+        if (f[k].status == CAD_FACE_BROKEN) sq_json_key_string(&j, "reason", f[k].reason);
         if (f[k].face) {
+            sq_json_healing(&j, m, f[k].index);
             const sq_face_info *in = &f[k].info;
             sq_json_key(&j, "chi");
             sq_json_int(&j, in->chi);
@@ -121,27 +137,62 @@ static void print_json(const char *path, const cad_model *m, const face_entry *f
     sq_json_end_object(&j);
 }
 
+/* Status of face f->index, its cad_face and info when it is planar and
+ * usable; a face that cannot be opened becomes broken with the reason. */
+static sq_status open_entry(const cad_model *m, face_entry *f, sq_error *err)
+{
+    f->surface = cad_model_face_surface(m, f->index);
+    f->status = cad_model_face_status(m, f->index, &f->reason);
+    if (f->status != CAD_FACE_OK && f->status != CAD_FACE_HEALED) return SQ_OK;
+    sq_error ferr;
+    sq_error_clear(&ferr);
+    sq_status st = cad_face_create(m, f->index, &f->face, &ferr);
+    if (st == SQ_OK) st = sq_face_info_compute(f->face, &f->info, &ferr);
+    if (st == SQ_ERR_INTERNAL && !strcmp(ferr.msg, "out of memory"))
+        return SQ_FAIL(err, st, "%s", ferr.msg);
+    if (st != SQ_OK) {
+        cad_face_free(&f->face);
+        f->status = CAD_FACE_BROKEN;
+        snprintf(f->msg, sizeof f->msg, "%s", ferr.msg);
+        f->reason = f->msg;
+    }
+    return SQ_OK;
+}
+
+/* One line on stderr: how many faces healing touched and how many are broken. */
+static void summary(const cad_model *m, const face_entry *f, int nf)
+{
+    int healed = 0, broken = 0;
+    for (int k = 0; k < nf; k++) {
+        healed += f[k].status == CAD_FACE_HEALED;
+        broken += f[k].status == CAD_FACE_BROKEN;
+    }
+    if (healed || broken)
+        fprintf(stderr, "semquad: %d face%s healed within %.3g %s, %d broken\n", healed,
+                healed == 1 ? "" : "s", cad_model_heal_tolerance(m), cad_model_unit(m), broken);
+}
+
 sq_status sq_cmd_info(int argc, char **argv, sq_error *err)
 {
-    const char *path = NULL, *val;
-    int face = -1, json = 0;
+    int json = 0;
+    sq_cli_args a;
+    sq_cli_args_init(&a);
     for (int i = 0; i < argc; i++) {
+        int taken;
+        SQ_TRY(sq_cli_take("info", argc, argv, &i, &a, &taken, err));
+        if (taken) continue;
         if (!strcmp(argv[i], "--json"))
             json = 1;
-        else if (!strcmp(argv[i], "--face")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            SQ_TRY(sq_cli_int("--face", val, 0, 1000000, &face, err));
-        } else if (argv[i][0] == '-' && argv[i][1]) {
-            return SQ_FAIL(err, SQ_ERR_USAGE, "info: unknown option %s", argv[i]);
-        } else if (!path)
-            path = argv[i];
         else
-            return SQ_FAIL(err, SQ_ERR_USAGE, "info: one input file expected");
+            return sq_cli_unknown("info", argv[i], err);
     }
-    if (!path) return SQ_FAIL(err, SQ_ERR_USAGE, "info: missing input file");
+    SQ_TRY(sq_cli_need_input("info", &a, err));
+    if (a.output || a.svg || a.report)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "info: writes to standard output only (no -o, --svg, --report)");
+    const char *path = a.input;
     cad_model *m = NULL;
-    SQ_TRY(cad_model_read(path, &m, err));
-    int total = cad_model_num_faces(m);
+    SQ_TRY(cad_model_read_with(path, &a.read, &m, err));
+    int total = cad_model_num_faces(m), face = a.face;
     if (face >= total) {
         cad_model_free(&m);
         return SQ_FAIL(err, SQ_ERR_USAGE, "--face %d: %s has %d face%s", face, path, total,
@@ -152,12 +203,10 @@ sq_status sq_cmd_info(int argc, char **argv, sq_error *err)
     sq_status st = f ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     for (int k = 0; k < nf && st == SQ_OK; k++) {
         f[k].index = first + k;
-        f[k].surface = cad_model_face_surface(m, first + k);
-        if (strcmp(f[k].surface, "plane")) continue;
-        st = cad_face_create(m, first + k, &f[k].face, err);
-        if (st == SQ_OK) st = sq_face_info_compute(f[k].face, &f[k].info, err);
+        st = open_entry(m, &f[k], err);
     }
     if (st == SQ_OK) {
+        if (!a.quiet) summary(m, f, nf);
         if (json)
             print_json(path, m, f, nf);
         else

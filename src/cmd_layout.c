@@ -46,7 +46,7 @@ sq_status sq_cmd_layout(int argc, char **argv, sq_error *err)
     cad_model *m = NULL;
     cad_face *f = NULL;
     const char *note;
-    SQ_TRY(sq_cli_open_face(args.input, args.face, &m, &f, &args.face, &note, err));
+    SQ_TRY(sq_cli_open_face(args.input, args.face, &args.read, &m, &f, &args.face, &note, err));
     double t_read = sq_now() - t0, t_split = -1.0;
     if (note && !args.quiet) fprintf(stderr, "semquad: note: %s\n", note);
     sq_layout_result r;

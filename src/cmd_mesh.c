@@ -116,9 +116,12 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
     cad_model *model = NULL;
     cad_face *f = NULL;
     const char *note;
-    SQ_TRY(sq_cli_open_face(args.input, args.face, &model, &f, &args.face, &note, err));
+    SQ_TRY(sq_cli_open_face(args.input, args.face, &args.read, &model, &f, &args.face, &note, err));
     t.read = sq_now() - t0;
     if (note && !args.quiet) fprintf(stderr, "semquad: note: %s\n", note);
+    char healed[1024];
+    if (!args.quiet && sq_cli_heal_note(model, args.face, healed, sizeof healed))
+        fprintf(stderr, "semquad: %s\n", healed);
     progress(args.quiet, "semquad: read %s", args.input, t.read);
     sq_layout_result r;
     sq_status st = sq_layout_run(f, &lo, &r, err);
@@ -184,7 +187,7 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
         t.write = sq_now() - t2;
         t.total = sq_now() - t0;
         if (st == SQ_OK && args.report)
-            st = sq_write_mesh_report(args.report, args.input, args.face, &r, m, &q, &t, err);
+            st = sq_write_mesh_report(args.report, args.input, model, args.face, &r, m, &q, &t, err);
         if (st == SQ_OK && !args.quiet) printf("%s\n", line);
     }
     sq_quad_mesh_free(&m);

@@ -39,7 +39,7 @@ sq_status sq_cmd_triangulate(int argc, char **argv, sq_error *err)
     cad_model *m = NULL;
     cad_face *f = NULL;
     const char *note;
-    SQ_TRY(sq_cli_open_face(args.input, args.face, &m, &f, &args.face, &note, err));
+    SQ_TRY(sq_cli_open_face(args.input, args.face, &args.read, &m, &f, &args.face, &note, err));
     if (note && !args.quiet) fprintf(stderr, "semquad: note: %s\n", note);
     sq_triangulation t;
     sq_status st = sq_triangulate(f, &opt, &t, err);

@@ -3,6 +3,7 @@
 #include <gsl/gsl_errno.h>
 #include <gsl/gsl_integration.h>
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -36,14 +37,14 @@ static double abs_curvature(double s, void *p)
 /* Adaptive Gauss–Kronrod over the edge: B-spline edges are only piecewise
  * smooth, which fixed rules would integrate to a few digits only. */
 static sq_status integrate_edge(const cad_face *face, int edge, double (*f)(double, void *),
-                                double *value, sq_error *err)
+                                double epsabs, double *value, sq_error *err)
 {
     gsl_integration_workspace *ws = gsl_integration_workspace_alloc(2000);
     if (!ws) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     edge_ctx ctx = {face, edge, SQ_OK, err};
     gsl_function F = {f, &ctx};
     double L = cad_face_edge_length(face, edge), abserr;
-    int rc = gsl_integration_qag(&F, 0.0, L, 1e-14, 1e-13, 2000, GSL_INTEG_GAUSS31, ws, value,
+    int rc = gsl_integration_qag(&F, 0.0, L, epsabs, 1e-13, 2000, GSL_INTEG_GAUSS31, ws, value,
                                  &abserr);
     gsl_integration_workspace_free(ws);
     if (ctx.status != SQ_OK) return ctx.status;
@@ -61,7 +62,7 @@ sq_status sq_edge_turning(const cad_face *face, int edge, double *turning, sq_er
         *turning = 0.0;
         return SQ_OK;
     }
-    return integrate_edge(face, edge, abs_curvature, turning, err);
+    return integrate_edge(face, edge, abs_curvature, 1e-14, turning, err); /* radians */
 }
 
 static void bbox_add(double bb[4], const double p[2])
@@ -87,10 +88,16 @@ sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_erro
     double twice_area = 0.0;
     for (int e = 0; e < ne && st == SQ_OK; e++) {
         double a = 0.0;
-        st = integrate_edge(face, e, green_integrand, &a, err);
+        /* absolute floor of |x dy - y dx| integrated: 1e-14 of the edge's
+         * own scale (length times distance from the origin) below unit
+         * size, so that a face scaled to 1e-9 is integrated as finely */
+        double p0[2], L = cad_face_edge_length(face, e);
+        st = cad_face_edge_eval(face, e, 0.0, p0, NULL, NULL, err);
+        if (st != SQ_OK) break;
+        double scale = L * (L + hypot(p0[0], p0[1]));
+        st = integrate_edge(face, e, green_integrand, 1e-14 * fmin(1.0, scale), &a, err);
         twice_area += a;
         /* Bounding box from a dense sample (exact enough for framing). */
-        double L = cad_face_edge_length(face, e);
         for (int k = 0; k <= 64 && st == SQ_OK; k++) {
             double p[2];
             st = cad_face_edge_eval(face, e, L * k / 64.0, p, NULL, NULL, err);
@@ -131,4 +138,60 @@ void sq_face_info_free(sq_face_info *info)
     if (!info) return;
     free(info->vertices);
     memset(info, 0, sizeof *info);
+}
+
+const char *sq_face_status_name(cad_face_status s)
+{
+    switch (s) {
+    case CAD_FACE_OK: return "ok";
+    case CAD_FACE_HEALED: return "healed";
+    case CAD_FACE_NOT_PLANAR: return "not planar";
+    case CAD_FACE_BROKEN: return "broken";
+    }
+    return "broken";
+}
+
+void sq_heal_text(const cad_heal *h, const char *unit, char *buf, size_t n)
+{
+    const double *p = h->at;
+    if (!strcmp(h->kind, "gap"))
+        snprintf(buf, n, "closed a %.3g %s gap between edges %d and %d of wire %d at (%.6g, %.6g, %.6g)",
+                 h->size, unit, h->edge_a, h->edge_b, h->wire, p[0], p[1], p[2]);
+    else if (!strcmp(h->kind, "connection"))
+        snprintf(buf, n, "joined edges %d and %d of wire %d, their vertices %.3g %s apart, at (%.6g, %.6g, %.6g)",
+                 h->edge_a, h->edge_b, h->wire, h->size, unit, p[0], p[1], p[2]);
+    else if (!strcmp(h->kind, "small edge"))
+        snprintf(buf, n, "merged edge %d of wire %d, %.3g %s long, at (%.6g, %.6g, %.6g)", h->edge_a,
+                 h->wire, h->size, unit, p[0], p[1], p[2]);
+    else
+        snprintf(buf, n, "fixed a %s in wire %d", h->kind, h->wire);
+}
+
+void sq_json_healing(sq_json *j, const cad_model *m, int face)
+{
+    sq_json_key(j, "healing");
+    sq_json_begin_object(j);
+    sq_json_key_number(j, "tolerance", cad_model_heal_tolerance(m));
+    sq_json_key(j, "fixes");
+    sq_json_begin_array(j);
+    cad_heal h;
+    for (int k = 0; cad_model_face_heal(m, face, k, &h) == 0; k++) {
+        sq_json_begin_object(j);
+        sq_json_key_string(j, "kind", h.kind);
+        sq_json_key_int(j, "wire", h.wire);
+        sq_json_key(j, "edges");
+        sq_json_begin_array(j);
+        if (h.edge_a >= 0) sq_json_int(j, h.edge_a);
+        if (h.edge_b >= 0) sq_json_int(j, h.edge_b);
+        sq_json_end_array(j);
+        sq_json_key_number(j, "size", h.size);
+        sq_json_key(j, "at");
+        sq_json_begin_array(j);
+        for (int d = 0; d < 3; d++)
+            sq_json_number(j, h.at[d]);
+        sq_json_end_array(j);
+        sq_json_end_object(j);
+    }
+    sq_json_end_array(j);
+    sq_json_end_object(j);
 }

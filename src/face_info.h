@@ -12,6 +12,9 @@
 #define SQ_FACE_INFO_H
 
 #include "cad.h"
+#include "json_writer.h"
+
+#include <stddef.h>
 
 /* Vertices whose turning angle is below this are smooth junctions, not
  * corners (degrees). */
@@ -39,5 +42,17 @@ void sq_face_info_free(sq_face_info *info); /* frees arrays, zeroes the struct *
 
 /* Total absolute turning of an edge, integral of |curvature| ds (radians). */
 sq_status sq_edge_turning(const cad_face *face, int edge, double *turning, sq_error *err);
+
+/* "ok", "healed", "not planar" or "broken" (semquad info's status). */
+const char *sq_face_status_name(cad_face_status s);
+
+/* What healing did, as a sentence: "closed a 1.2e-05 mm gap between edges
+ * 0 and 1 of wire 0 at (1, 0, 0)". */
+void sq_heal_text(const cad_heal *h, const char *unit, char *buf, size_t n);
+
+/* The "healing" key of face `face` into an open JSON object: {"tolerance":
+ * T, "fixes": [{"kind", "wire", "edges", "size", "at"}]}; tolerance 0 when
+ * healing is off. */
+void sq_json_healing(sq_json *j, const cad_model *m, int face);
 
 #endif

@@ -17,8 +17,9 @@ static const char *usage =
     "usage: semquad COMMAND [options]\n"
     "\n"
     "commands:\n"
-    "  info FILE [--face N] [--json]\n"
-    "      faces, boundary loops, edges (type, length), corners (angle), chi, area.\n"
+    "  info FILE [--face N] [--json] [-q]\n"
+    "      every face with its status (ok, healed, not planar, broken: reason), boundary\n"
+    "      loops, edges (type, length), corners (angle), chi, area, what was healed.\n"
     "  triangulate FILE [--face N] [--order P] [--size H] [--min-angle A] [--max-turn T]\n"
     "              [-o out.vtu] [--svg out.svg] [--report out.json] [--quiet]\n"
     "      coarse curved triangulation of order P (1..12, default 4): CGAL constrained\n"
@@ -71,6 +72,10 @@ static const char *usage =
     "\n"
     "FILE is STEP (.step/.stp), IGES (.iges/.igs) or BREP (.brep/.brp); lengths stay in\n"
     "the file's unit. The default face is the only planar face (else face 0).\n"
+    "Every command heals the planar faces it reads (gaps, unshared vertices, small\n"
+    "edges) within the file's own tolerance (docs/healing.md):\n"
+    "  --heal-tolerance T   heal within T (file unit) instead\n"
+    "  --no-heal            take the faces as read\n"
     "\n"
     "exit status: 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 unsupported\n"
     "geometry, 5 invalid singularity pattern, 6 no valid layout, 7 output not written.\n";
@@ -81,6 +86,8 @@ int main(int argc, char **argv)
     sq_error_clear(&err);
     /* GSL failures must come back as status codes, not abort the program */
     gsl_set_error_handler_off();
+    /* OpenCASCADE's access violations on hostile files become exceptions */
+    cad_catch_signals();
     /* CHOLMOD's supernodal loops ask OpenMP for 4 threads, a number fixed
      * when it was built (CHOLMOD_OMP_NUM_THREADS), whatever the machine: on
      * small supernodes (the DG guiding field) and 2 cores their barriers

@@ -1,10 +1,11 @@
 #include "write_mesh_report.h"
 
+#include "face_info.h"
 #include "outfile.h"
 #include "write_layout.h"
 
-sq_status sq_write_mesh_report(const char *path, const char *input, int face,
-                               const sq_layout_result *r, const sq_quad_mesh *m,
+sq_status sq_write_mesh_report(const char *path, const char *input, const cad_model *model,
+                               int face, const sq_layout_result *r, const sq_quad_mesh *m,
                                const sq_quad_quality *q, const sq_mesh_timings *t, sq_error *err)
 {
     sq_outfile f;
@@ -13,6 +14,7 @@ sq_status sq_write_mesh_report(const char *path, const char *input, int face,
     sq_json_init(&j, f.fp);
     sq_json_begin_object(&j);
     sq_json_layout_head(&j, input, face, r);
+    sq_json_healing(&j, model, face);
     sq_json_key(&j, "mesh");
     sq_json_begin_object(&j);
     sq_json_key_int(&j, "quads", m->nquads);

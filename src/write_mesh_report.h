@@ -3,6 +3,7 @@
 #ifndef SQ_WRITE_MESH_REPORT_H
 #define SQ_WRITE_MESH_REPORT_H
 
+#include "cad.h"
 #include "layout_pipeline.h"
 #include "quad_mesh.h"
 
@@ -12,8 +13,9 @@ typedef struct {
     double read, triangulate, solve, critical_points, trace, layout, mesh, write, total;
 } sq_mesh_timings;
 
-sq_status sq_write_mesh_report(const char *path, const char *input, int face,
-                               const sq_layout_result *r, const sq_quad_mesh *m,
+/* model: the file read, for the face's "healing" key */
+sq_status sq_write_mesh_report(const char *path, const char *input, const cad_model *model,
+                               int face, const sq_layout_result *r, const sq_quad_mesh *m,
                                const sq_quad_quality *q, const sq_mesh_timings *t, sq_error *err);
 
 #endif

@@ -1,0 +1,268 @@
+// semquad cad/ — healing the planar faces of a model within a tolerance,
+// with OpenCASCADE's shape analysis and fixing tools (docs/healing.md).
+//
+// design, per planar face (once per file, at read time):
+//  1. analyse each wire at the face's own precision (the largest tolerance
+//     of its edges: what cad_face_create accepts at a junction) with
+//     ShapeAnalysis_Wire on its edges in the order of travel: gaps between
+//     consecutive 3D curve ends (CheckGap3d), consecutive edges that do not
+//     share their vertex, edges shorter than that precision (CheckSmall),
+//     degenerated edges a planar face cannot have (CheckDegenerated);
+//  2. no defect: the face is left exactly as read (examples stay
+//     byte-identical);
+//  3. a defect larger than the healing tolerance: the face is broken, with
+//     a one-line reason naming the defect, its size, the tolerance and the
+//     --heal-tolerance that would allow it;
+//  4. else ShapeFix_Wire on each wire (reorder, small, connect, gaps 3D/2D,
+//     degenerated, self-intersection; ShapeFix_Edge for the vertex
+//     tolerances and same parameter) of a deep copy of the face
+//     (shared edges and vertices of the other faces keep their tolerances),
+//     precision = the face's own, maximal tolerance = the healing tolerance;
+//     the fixed face is analysed again (step 1 at its new edge tolerances)
+//     and replaces the face in the model, or the face is broken if a defect
+//     is left.
+#include "cad_private.hxx"
+
+#include <BRepAdaptor_Curve.hxx>
+#include <BRepBuilderAPI_Copy.hxx>
+#include <BRepTools_WireExplorer.hxx>
+#include <BRep_Builder.hxx>
+#include <BRep_Tool.hxx>
+#include <GCPnts_AbscissaPoint.hxx>
+#include <ShapeAnalysis_Wire.hxx>
+#include <Standard_ErrorHandler.hxx>
+#include <ShapeExtend_WireData.hxx>
+#include <ShapeFix_Edge.hxx>
+#include <ShapeFix_Wire.hxx>
+#include <TopExp.hxx>
+#include <TopExp_Explorer.hxx>
+#include <TopoDS.hxx>
+#include <TopoDS_Iterator.hxx>
+#include <TopoDS_Vertex.hxx>
+#include <TopoDS_Wire.hxx>
+
+#include <algorithm>
+#include <cmath>
+#include <cstdio>
+
+namespace {
+
+// Largest tolerance of the face's edges: the precision at which the face is
+// taken as it is (cad_face_create's closure test uses the same tolerances).
+double face_precision(const TopoDS_Face &face)
+{
+    double p = 0;
+    for (TopExp_Explorer ex(face, TopAbs_EDGE); ex.More(); ex.Next())
+        p = std::max(p, BRep_Tool::Tolerance(TopoDS::Edge(ex.Current())));
+    return p;
+}
+
+// Largest tolerance of the face's vertices and edges.
+double face_tolerance(const TopoDS_Face &face)
+{
+    double t = face_precision(face);
+    for (TopExp_Explorer ex(face, TopAbs_VERTEX); ex.More(); ex.Next())
+        t = std::max(t, BRep_Tool::Tolerance(TopoDS::Vertex(ex.Current())));
+    return t;
+}
+
+void midpoint(const gp_Pnt &a, const gp_Pnt &b, double at[3])
+{
+    at[0] = 0.5 * (a.X() + b.X()), at[1] = 0.5 * (a.Y() + b.Y()), at[2] = 0.5 * (a.Z() + b.Z());
+}
+
+sqcad::heal_record record(const char *kind, int wire, int a, int b, double size, const double at[3])
+{
+    sqcad::heal_record r;
+    r.kind = kind;
+    r.wire = wire;
+    r.edge_a = a;
+    r.edge_b = b;
+    r.size = size;
+    for (int d = 0; d < 3; ++d)
+        r.at[d] = at[d];
+    return r;
+}
+
+// Defects of one wire at precision prec (design 1), appended to out.
+void analyse_wire(const TopoDS_Wire &wire, const TopoDS_Face &face, int w, double prec,
+                  std::vector<sqcad::heal_record> &out)
+{
+    // The order of travel cad_face_create follows (BRepTools_WireExplorer:
+    // shared vertices); if that chain misses edges, ShapeFix_Wire's
+    // reordering by the curves' ends.  The order alone is not a defect.
+    Handle(ShapeExtend_WireData) wd = new ShapeExtend_WireData;
+    for (BRepTools_WireExplorer wx(wire, face); wx.More(); wx.Next())
+        wd->Add(wx.Current());
+    if (wd->NbEdges() < ShapeExtend_WireData(wire).NbEdges()) {
+        ShapeFix_Wire order(wire, face, prec);
+        order.FixReorder();
+        wd = order.WireData();
+    }
+    ShapeAnalysis_Wire saw(wd, face, prec);
+    const int n = wd->NbEdges();
+    for (int i = 1; i <= n; ++i) {
+        const int prev = i == 1 ? n : i - 1;
+        const TopoDS_Edge e = wd->Edge(i), ep = wd->Edge(prev);
+        const TopoDS_Vertex vp = TopExp::LastVertex(ep, Standard_True);
+        const TopoDS_Vertex v = TopExp::FirstVertex(e, Standard_True);
+        double at[3] = {0, 0, 0};
+        if (!v.IsNull()) {
+            gp_Pnt p = BRep_Tool::Pnt(v);
+            at[0] = p.X(), at[1] = p.Y(), at[2] = p.Z();
+        }
+        if (n > 1 && saw.CheckGap3d(i)) {
+            double t0, t1, s0, s1;
+            Handle(Geom_Curve) cp = BRep_Tool::Curve(ep, t0, t1), c = BRep_Tool::Curve(e, s0, s1);
+            if (!cp.IsNull() && !c.IsNull())
+                midpoint(cp->Value(ep.Orientation() == TopAbs_REVERSED ? t0 : t1),
+                         c->Value(e.Orientation() == TopAbs_REVERSED ? s1 : s0), at);
+            out.push_back(record("gap", w, prev - 1, i - 1, saw.MinDistance3d(), at));
+        } else if (n > 1 && !vp.IsNull() && !v.IsNull() && !vp.IsSame(v)) {
+            double d = BRep_Tool::Pnt(vp).Distance(BRep_Tool::Pnt(v));
+            out.push_back(record("connection", w, prev - 1, i - 1, d, at));
+        }
+        if (saw.CheckSmall(i, prec)) {
+            double len = BRep_Tool::IsGeometric(e) ? GCPnts_AbscissaPoint::Length(BRepAdaptor_Curve(e))
+                                                   : 0.0;
+            out.push_back(record("small edge", w, i - 1, -1, len, at));
+        }
+        if (!BRep_Tool::Degenerated(e) && saw.CheckDegenerated(i))
+            out.push_back(record("degenerated edge", w, i - 1, -1, 0, at));
+    }
+}
+
+std::vector<sqcad::heal_record> analyse_face(const TopoDS_Face &face, double prec)
+{
+    std::vector<sqcad::heal_record> out;
+    int w = 0;
+    for (TopoDS_Iterator it(face); it.More(); it.Next())
+        if (it.Value().ShapeType() == TopAbs_WIRE)
+            analyse_wire(TopoDS::Wire(it.Value()), face, w++, prec, out);
+    return out;
+}
+
+// The first defect healing cannot size against the tolerance, or larger
+// than it; NULL if none.
+const sqcad::heal_record *beyond(const std::vector<sqcad::heal_record> &d, double tol)
+{
+    for (const auto &r : d)
+        if (r.kind == "degenerated edge" || r.size > tol) return &r;
+    return NULL;
+}
+
+// "gap of 0.01 mm between edges 0 and 1 of wire 0 at (1, 0, 0)"
+std::string describe(const sqcad::heal_record &r, const char *unit)
+{
+    char buf[400];
+    if (r.edge_b >= 0)
+        std::snprintf(buf, sizeof buf, "%s of %.3g %s between edges %d and %d of wire %d at (%.6g, %.6g, %.6g)",
+                      r.kind.c_str(), r.size, unit, r.edge_a, r.edge_b, r.wire, r.at[0], r.at[1],
+                      r.at[2]);
+    else
+        std::snprintf(buf, sizeof buf, "%s %d of wire %d (length %.3g %s) at (%.6g, %.6g, %.6g)",
+                      r.kind.c_str(), r.edge_a, r.wire, r.size, unit, r.at[0], r.at[1], r.at[2]);
+    return buf;
+}
+
+// The face rebuilt from its wires, each fixed by ShapeFix_Wire the way
+// OpenCASCADE's own wire builder closes gaps (BRepBuilderAPI_MakeWire's
+// healing: connect within the tolerance, then close the 3D gaps by the
+// curves' ranges or ends, vertex tolerances and same-parameter fixed).
+TopoDS_Face fix_face(const TopoDS_Face &face, double prec, double tol)
+{
+    TopoDS_Face out = TopoDS::Face(face.EmptyCopied());
+    BRep_Builder b;
+    for (TopoDS_Iterator it(face); it.More(); it.Next()) {
+        if (it.Value().ShapeType() != TopAbs_WIRE) continue;
+        ShapeFix_Wire w(TopoDS::Wire(it.Value()), face, prec);
+        w.SetMaxTolerance(tol);
+        w.ModifyTopologyMode() = Standard_True;
+        w.ModifyGeometryMode() = Standard_True;
+        w.ClosedWireMode() = Standard_True;
+        w.FixReorder();
+        w.FixSmall(Standard_False, prec);
+        w.FixConnected(tol);
+        w.FixGapsByRangesMode() = Standard_True;
+        w.FixGaps3d();
+        w.FixGaps2d();
+        w.FixDegenerated();
+        w.FixSelfIntersection();
+        Handle(ShapeExtend_WireData) wd = w.WireData();
+        ShapeFix_Edge fe;
+        for (int i = 1; i <= wd->NbEdges(); ++i) {
+            fe.FixVertexTolerance(wd->Edge(i), face);
+            fe.FixSameParameter(wd->Edge(i), face);
+        }
+        b.Add(out, w.Wire());
+    }
+    return out;
+}
+
+// Heal face i of the model (design 2-4).
+void heal_face(cad_model *m, int i, double file_tol, bool given)
+{
+    const TopoDS_Face face = TopoDS::Face(m->faces(i + 1));
+    // Gaps are sought down to 1e-8 of the face's size even where its
+    // tolerances are larger (a face scaled to 1e-9 keeps the 1e-7 of its
+    // writer), so that a gap the tolerances hide is still closed and said.
+    const double prec = std::min(face_precision(face), 1e-8 * sqcad::face_size(face));
+    std::vector<sqcad::heal_record> d = analyse_face(face, prec);
+    if (d.empty()) return;
+    // The file's own tolerance for this face: its uncertainty or the face's
+    // vertex and edge tolerances, whichever is larger.
+    const double tol = given ? file_tol : std::max(m->uncertainty, face_tolerance(face));
+    if (const sqcad::heal_record *r = beyond(d, std::max(tol, prec))) {
+        char buf[600];
+        if (r->size > 0)
+            std::snprintf(buf, sizeof buf, "%s exceeds the healing tolerance %.3g %s (--heal-tolerance %.2g would allow it)",
+                          describe(*r, m->unit).c_str(), tol, m->unit, 1.5 * r->size);
+        else
+            std::snprintf(buf, sizeof buf, "%s cannot be healed", describe(*r, m->unit).c_str());
+        m->status[(size_t)i] = CAD_FACE_BROKEN;
+        m->reason[(size_t)i] = buf;
+        return;
+    }
+    TopoDS_Face healed = fix_face(TopoDS::Face(BRepBuilderAPI_Copy(face).Shape()), prec,
+                                  std::max(tol, prec));
+    std::vector<sqcad::heal_record> left =
+        analyse_face(healed, std::min(std::max(tol, prec), face_precision(healed)));
+    if (!left.empty() || healed.IsNull()) {
+        m->status[(size_t)i] = CAD_FACE_BROKEN;
+        m->reason[(size_t)i] = left.empty() ? std::string("healing gave no face")
+                                            : "healing left a " + describe(left[0], m->unit);
+        return;
+    }
+    m->faces.Substitute(i + 1, healed);
+    m->status[(size_t)i] = CAD_FACE_HEALED;
+    m->heals[(size_t)i] = d;
+}
+
+} // namespace
+
+namespace sqcad {
+
+void heal_model(cad_model *m, double tol, bool given)
+{
+    const int nf = m->faces.Extent();
+    m->status.assign((size_t)nf, CAD_FACE_OK);
+    m->reason.assign((size_t)nf, std::string());
+    m->heals.assign((size_t)nf, std::vector<heal_record>());
+    for (int i = 0; i < nf; ++i) {
+        if (!m->planar[(size_t)i]) {
+            m->status[(size_t)i] = CAD_FACE_NOT_PLANAR;
+            continue;
+        }
+        if (!(tol > 0)) continue; // healing off
+        try {
+            OCC_CATCH_SIGNALS
+            heal_face(m, i, tol, given);
+        } catch (const Standard_Failure &e) {
+            m->status[(size_t)i] = CAD_FACE_BROKEN;
+            m->reason[(size_t)i] = std::string("healing failed (OpenCASCADE ") +
+                                   e.DynamicType()->Name() + ")";
+        }
+    }
+}
+
+} // namespace sqcad
