@@ -31,8 +31,10 @@ def run_mesh(semquad, step, workdir, tag, timeout, extra=()):
         code = None
     dt = time.perf_counter() - t0
     lines = [ln for ln in err.decode(errors="replace").splitlines() if ln.strip()]
-    r = {"exit": code, "seconds": round(dt, 3),
-         "stderr": lines[-1] if lines else "", "stderr_all": lines[-20:]}
+    # the error is semquad's own line; a library may add lines of its own after it
+    mine = [ln for ln in lines if ln.startswith("semquad:")]
+    r = {"exit": code, "seconds": round(dt, 3), "stderr_lines": len(lines),
+         "stderr": (mine or lines or [""])[-1], "stderr_all": lines[-20:]}
     if code == 0 and os.path.exists(rep):
         r.update(report_figures(rep))
     for f in (rep, msh):

@@ -3,7 +3,7 @@
 
 usage: /usr/bin/python3 bench/real_parts_bench.py PARTS_DIR [--semquad PATH] [--timeout 60]
            [--jobs 2] [--max-faces K] [--files a.stp,b.brep] [--gmsh] [--peer CMD]
-           [--json out.json] [--doc docs/benchmarks.md]
+           [--json out.json] [--doc docs/benchmarks.md] [--from-json run.json]
 
 For every STEP/IGES/BREP file of PARTS_DIR: `semquad info FILE --json` lists its faces;
 every planar face (or K of them, evenly spread over the file's face indices, with
@@ -19,7 +19,8 @@ every scaled Jacobian > 0.  A file `info` cannot read counts as one failure.
          (the calling convention of a Gmsh 4.13 quasi-structured wrapper: FACE is the
          0-based surface index in OCC's order), same size; covered when OUT.msh holds
          quadrangles only.
-Prints Markdown; --doc replaces (or appends) the section "Planar faces of real parts".
+Prints Markdown; --doc replaces (or appends) the section "Planar faces of real parts";
+--from-json writes the tables of an earlier --json run instead of meshing.
 """
 import argparse
 import concurrent.futures
@@ -249,8 +250,14 @@ def main():
     ap.add_argument("--peer", default=os.environ.get("SQ_QUADQS"))
     ap.add_argument("--json")
     ap.add_argument("--doc")
+    ap.add_argument("--from-json")
     args = ap.parse_args()
-    file_rows, rows = run(args)
+    if args.from_json:
+        with open(args.from_json) as f:
+            d = json.load(f)
+        file_rows, rows = d["files"], d["faces"]
+    else:
+        file_rows, rows = run(args)
     md = markdown(file_rows, rows, args)
     print(md)
     if args.json:
