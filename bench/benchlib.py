@@ -51,7 +51,8 @@ def report_figures(path):
     out = {"quads": m.get("quads"), "irregular": m.get("irregular_interior_vertices"),
            "min_sj": m.get("min_scaled_jacobian"), "inverted": m.get("inverted"),
            "field": d.get("field", {}).get("kind")}
-    gb = lay.get("gauss_bonnet_min", d.get("gauss_bonnet_min"))
+    # the key's place in the report is not settled: the layout's, the mesh's or the top level
+    gb = next((o["gauss_bonnet_min"] for o in (lay, m, d) if "gauss_bonnet_min" in o), None)
     if gb is not None:
         out["gauss_bonnet_min"] = gb
         if out["irregular"] is not None:
@@ -118,6 +119,23 @@ def failure_table(rows, name_of, examples=3):
     if len(out) == 2:
         out.append("| (none) | 0 | |")
     return out
+
+
+def common_args(ap, root, section):
+    """The options both benchmarks take."""
+    ap.add_argument("--semquad", default=os.environ.get("SEMQUAD", os.path.join(root, "build", "src", "semquad")))
+    ap.add_argument("--timeout", type=float, default=60.0, help="seconds per face (default 60)")
+    ap.add_argument("--jobs", type=int, default=2, help="faces at a time (at most 2)")
+    ap.add_argument("--json", help="write every face's record here")
+    ap.add_argument("--doc", help="replace the '%s' section of this Markdown file" % section)
+    ap.add_argument("--from-json", help="tables of this earlier --json run, no meshing")
+
+
+def source_commit(root):
+    """The last commit that changed semquad's sources (the bench files' own commits
+    do not change the binary)."""
+    return subprocess.run(["git", "-C", root, "log", "-1", "--format=%h", "--", "src", "cad", "sem", "common"],
+                          capture_output=True, text=True).stdout.strip()
 
 
 def replace_section(doc_path, title, body):

@@ -241,16 +241,11 @@ def markdown(file_rows, rows, args):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("parts")
-    ap.add_argument("--semquad", default=os.environ.get("SEMQUAD", os.path.join(ROOT, "build", "src", "semquad")))
-    ap.add_argument("--timeout", type=float, default=60.0)
-    ap.add_argument("--jobs", type=int, default=2)
-    ap.add_argument("--max-faces", type=int, default=0)
+    benchlib.common_args(ap, ROOT, "Planar faces of real parts")
+    ap.add_argument("--max-faces", type=int, default=0, help="planar faces per file (default all)")
     ap.add_argument("--files", help="comma-separated file names of PARTS_DIR")
-    ap.add_argument("--gmsh", action="store_true")
-    ap.add_argument("--peer", default=os.environ.get("SQ_QUADQS"))
-    ap.add_argument("--json")
-    ap.add_argument("--doc")
-    ap.add_argument("--from-json")
+    ap.add_argument("--gmsh", action="store_true", help="Gmsh 4.8.4's coverage too")
+    ap.add_argument("--peer", default=os.environ.get("SQ_QUADQS"), help="peer command (default $SQ_QUADQS)")
     args = ap.parse_args()
     if args.from_json:
         with open(args.from_json) as f:
@@ -264,10 +259,9 @@ def main():
         with open(args.json, "w") as f:
             json.dump({"files": file_rows, "faces": rows}, f, indent=1)
     if args.doc:
-        rev = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True,
-                             text=True).stdout.strip()
+        rev = benchlib.source_commit(ROOT)
         head = ("`/usr/bin/python3 bench/real_parts_bench.py PARTS --max-faces %d%s --doc docs/benchmarks.md` "
-                "with the files of bench/real_parts.md in PARTS (semquad of commit %s, `build/`, %s UTC, "
+                "with the files of bench/real_parts.md in PARTS (semquad built from commit %s, `build/` (debugoptimized), %s UTC, "
                 "shared 2-core machine, 2 faces at a time).\n\n"
                 % (args.max_faces, " --gmsh" if args.gmsh else "", rev,
                    datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M")))

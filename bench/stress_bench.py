@@ -21,7 +21,6 @@ import datetime
 import json
 import os
 import statistics
-import subprocess
 import sys
 import tempfile
 
@@ -131,14 +130,9 @@ def markdown(rows, corpus, semquad, timeout, classes_order):
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n")[0])
     ap.add_argument("corpus")
-    ap.add_argument("--semquad", default=os.environ.get("SEMQUAD", os.path.join(ROOT, "build", "src", "semquad")))
-    ap.add_argument("--timeout", type=float, default=60.0)
-    ap.add_argument("--jobs", type=int, default=2)
+    benchlib.common_args(ap, ROOT, "Stress corpus")
     ap.add_argument("--only", help="comma-separated face names (0004_fillet) or ids")
     ap.add_argument("--classes", help="comma-separated classes")
-    ap.add_argument("--json", help="write every face's record here")
-    ap.add_argument("--doc", help="replace the 'Stress corpus' section of this Markdown file")
-    ap.add_argument("--from-json", help="tables of this earlier --json run, no meshing")
     a = ap.parse_args()
     m, faces = load(a.corpus, a.only.split(",") if a.only else None,
                     set(a.classes.split(",")) if a.classes else None)
@@ -155,11 +149,10 @@ def main():
         with open(a.json, "w") as f:
             json.dump(rows, f, indent=1)
     if a.doc:
-        rev = subprocess.run(["git", "-C", ROOT, "rev-parse", "--short", "HEAD"], capture_output=True,
-                             text=True).stdout.strip()
+        rev = benchlib.source_commit(ROOT)
         head = ("`/usr/bin/python3 bench/stress_corpus.py CORPUS --seed %d --count %d` then "
                 "`/usr/bin/python3 bench/stress_bench.py CORPUS --doc docs/benchmarks.md` "
-                "(semquad of commit %s, debug build of `build/`, %s UTC, shared 2-core machine, "
+                "(semquad built from commit %s, `build/` (debugoptimized), %s UTC, shared 2-core machine, "
                 "2 faces at a time).\n\n" % (m["seed"], len(m["faces"]), rev,
                                              datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M")))
         benchlib.replace_section(a.doc, "Stress corpus", head + md)
