@@ -660,17 +660,26 @@ def write_face(path, loops, transform):
     keep = set(gmsh.model.getBoundary([(2, s)], combined=False, oriented=False, recursive=True))
     keep |= set(e for c in gmsh.model.getBoundary([(2, s)], combined=False, oriented=False)
                 for e in gmsh.model.getBoundary([c], combined=False, oriented=False))
-    extra = [e for e in gmsh.model.getEntities(0) + gmsh.model.getEntities(1) if e not in keep]
-    if extra:
-        occ.remove(extra)
-        occ.synchronize()
+    for dim in (1, 0):  # curves first: a point a curve still uses is not removed
+        extra = [e for e in gmsh.model.getEntities(dim) if e not in keep]
+        if extra:
+            occ.remove(extra)
+            occ.synchronize()
     with _Quiet():
         gmsh.write(path)
+    with open(path) as f:
+        text = f.read()
     if "scale" in transform:
-        with open(path) as f:
-            text = f.read()
-        with open(path, "w") as f:
-            f.write(scale_step(text, transform["scale"]))
+        text = scale_step(text, transform["scale"])
+    with open(path, "w") as f:
+        f.write(stable_header(text, os.path.basename(path)[:-5]))
+
+
+def stable_header(text, name):
+    """The same bytes for the same face: OCCT's writer stamps the time and numbers
+    its products by the count of files written in the session."""
+    text = re.sub(r"FILE_NAME\('[^']*',\s*'[^']*'", "FILE_NAME('%s.step','2000-01-01T00:00:00'" % name, text, count=1)
+    return re.sub(r"'Open CASCADE STEP translator ([0-9.]+) [0-9]+'", "'%s'" % name, text)
 
 
 _NUM = r"[-+]?[0-9.]+(?:E[-+]?[0-9]+)?"
@@ -729,8 +738,11 @@ def generate(outdir, seed=1, ids=None, count=320, classes=None):
             write_face(path, loops, transform)
             nf, back, err = reread(path)
             # the face is what was drawn if OCC reads back one face of the drawn area
-            # (1e-4: the sampling's chord error, (pi/400)^2/6 of an arc's area, is < 1e-5)
-            ok = nf == 1 and abs(back - area * scale2) <= 1e-4 * area * scale2 and cls != "invalid"
+            # (1e-3: the sampling's chord error, (pi/400)^2/6 of an arc's area, is < 1e-5,
+            # but OCC's own integral over faces bounded by wavy B-splines is off by up to
+            # 2e-4 — faces 131 and 227 of seed 1 — while a feature lost to OCC's 1e-7
+            # tolerance changes the area by far more: 10 % for face 62)
+            ok = nf == 1 and abs(back - area * scale2) <= 1e-3 * area * scale2 and cls != "invalid"
             e = {"id": i, "file": name, "class": cls, "seed": seed, "params": params,
                  "transform": transform, "area": area * scale2, "reread_area": back, "valid": ok}
             if cls == "invalid":
