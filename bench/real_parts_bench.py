@@ -40,17 +40,17 @@ EXTS = (".step", ".stp", ".iges", ".igs", ".brep", ".brp")
 
 
 def list_faces(semquad, path, timeout):
-    """(planar faces [(index, area)], total faces, error line or '')."""
+    """(planar faces [(index, area)], total faces, the file's unit, error line or '')."""
     try:
         p = subprocess.run([semquad, "info", path, "--json"], capture_output=True, timeout=timeout)
     except subprocess.TimeoutExpired:
-        return [], 0, "timeout"
+        return [], 0, "", "timeout"
     if p.returncode != 0:
         err = [ln for ln in p.stderr.decode(errors="replace").splitlines() if ln.strip()]
-        return [], 0, "exit %d: %s" % (p.returncode, err[-1] if err else "")
+        return [], 0, "", "exit %d: %s" % (p.returncode, err[-1] if err else "")
     d = json.loads(p.stdout)
     faces = d["faces"]
-    return [(f["index"], f["area"]) for f in faces if f["surface"] == "plane"], len(faces), ""
+    return [(f["index"], f["area"]) for f in faces if f["surface"] == "plane"], len(faces), d.get("unit", ""), ""
 
 
 def spread(items, k):
@@ -62,9 +62,11 @@ def spread(items, k):
 
 GMSH_CHILD = r"""
 import json, sys, gmsh
-path, faces = sys.argv[1], json.loads(sys.argv[2])
+path, faces, unit = sys.argv[1], json.loads(sys.argv[2]), sys.argv[3]
 gmsh.initialize(["gmsh", "-v", "0"]); gmsh.option.setNumber("General.Terminal", 0)
 gmsh.option.setNumber("General.NumThreads", 1)
+if unit:  # Gmsh converts STEP/IGES to mm unless told the unit to keep; semquad keeps the file's
+    gmsh.option.setString("Geometry.OCCTargetUnit", unit.upper())
 ents = gmsh.model.occ.importShapes(path); gmsh.model.occ.synchronize()
 surfs = gmsh.model.getEntities(2)
 for idx, area, h in faces:
@@ -92,7 +94,7 @@ gmsh.finalize()
 """
 
 
-def gmsh_file(path, faces, timeout):
+def gmsh_file(path, faces, unit, timeout):
     """Gmsh 4.8.4 per face of one file, {face: (covered, note)}; a child that dies
     (Gmsh can crash on a face) costs that face only: the next child resumes after it."""
     res = {}
@@ -100,7 +102,7 @@ def gmsh_file(path, faces, timeout):
     while todo:
         arg = json.dumps([[i, a, math.sqrt(a) / 8] for i, a in todo])
         try:
-            p = subprocess.run([sys.executable, "-c", GMSH_CHILD, path, arg], capture_output=True,
+            p = subprocess.run([sys.executable, "-c", GMSH_CHILD, path, arg, unit], capture_output=True,
                                timeout=timeout * len(todo), text=True)
             out, why = p.stdout, "exit %d" % p.returncode
         except subprocess.TimeoutExpired as e:
@@ -140,11 +142,12 @@ def msh_types(path):
     return n
 
 
-def peer_face(cmd, path, idx, area, work, timeout):
+def peer_face(cmd, path, idx, area, unit, work, timeout):
     out = os.path.join(work, "peer_%d_%d.msh" % (os.getpid(), idx))
+    env = dict(os.environ, QUADQS_UNIT=unit.upper())  # keep the file's unit, as semquad does
     try:
         p = subprocess.run(cmd.split() + [path, repr(math.sqrt(area) / 8), out, "1", str(idx)],
-                           capture_output=True, timeout=timeout, text=True)
+                           capture_output=True, timeout=timeout, text=True, env=env)
     except subprocess.TimeoutExpired:
         return False, "timeout"
     if p.returncode != 0 or not os.path.exists(out):
@@ -166,22 +169,22 @@ def run(args):
     file_rows = []
     for f in files:
         path = os.path.join(args.parts, f)
-        planar, total, err = list_faces(args.semquad, path, args.timeout)
+        planar, total, unit, err = list_faces(args.semquad, path, args.timeout)
         chosen = spread(planar, args.max_faces)
         file_rows.append({"file": f, "faces": total, "planar": len(planar), "meshed_faces": len(chosen),
-                          "info_error": err})
+                          "unit": unit, "info_error": err})
         for idx, area in chosen:
-            jobs.append((f, path, idx, area))
+            jobs.append((f, path, idx, area, unit))
         print("%s: %d faces, %d planar, %d chosen %s" % (f, total, len(planar), len(chosen), err),
               file=sys.stderr, flush=True)
 
     def one(job):
-        f, path, idx, area = job
+        f, path, idx, area, unit = job
         r = benchlib.run_mesh(args.semquad, path, work, "%s_%d" % (f, idx), args.timeout, ["--face", str(idx)])
         r.update({"file": f, "face": idx, "area": area})
         r["outcome"] = benchlib.outcome(r)
         if args.peer:
-            r["peer"] = peer_face(args.peer, path, idx, area, work, args.timeout)
+            r["peer"] = peer_face(args.peer, path, idx, area, unit, work, args.timeout)
         return r
 
     rows = []
@@ -191,15 +194,24 @@ def run(args):
             print("%-45s face %-4d %-5s %6.2fs %s" % (r["file"], r["face"], r["exit"], r["seconds"], r["outcome"]),
                   file=sys.stderr, flush=True)
     if args.gmsh:
-        by_file = {}
-        for r in rows:
-            by_file.setdefault(r["file"], []).append(r)
-        for f, rs in by_file.items():
-            res = gmsh_file(os.path.join(args.parts, f), [(r["face"], r["area"]) for r in rs], args.timeout)
-            for r in rs:
-                r["gmsh"] = res[r["face"]]
+        gmsh_stage(args, file_rows, rows)
     os.rmdir(work)
     return file_rows, rows
+
+
+def gmsh_stage(args, file_rows, rows):
+    """Gmsh 4.8.4 on the faces semquad meshed, one child process per file."""
+    unit = {fr["file"]: fr.get("unit") for fr in file_rows}
+    by_file = {}
+    for r in rows:
+        by_file.setdefault(r["file"], []).append(r)
+    for f, rs in by_file.items():
+        path = os.path.join(args.parts, f)
+        if unit.get(f) is None:  # a run from before units were recorded
+            unit[f] = list_faces(args.semquad, path, args.timeout)[2]
+        res = gmsh_file(path, [(r["face"], r["area"]) for r in rs], unit[f], args.timeout)
+        for r in rs:
+            r["gmsh"] = res[r["face"]]
 
 
 def markdown(file_rows, rows, args):
@@ -225,16 +237,21 @@ def markdown(file_rows, rows, args):
     lines += ["", "Wall time per face, seconds (every face; meshed faces only):", "",
               "| faces | p50 | p90 | p99 | max |", "|---|---|---|---|---|",
               benchlib.time_row(rows), benchlib.time_row(ok)]
-    for key, name in (("gmsh", "Gmsh 4.8.4 (Frontal-Delaunay for quads + Blossom)"),
+    for key, name in (("gmsh", "Gmsh 4.8.4 (Frontal-Delaunay for quads + Blossom, size sqrt(area)/8)"),
                       ("peer", "peer (`--peer`)")):
-        got = [r for r in rows if key in r]
+        # a face the other mesher numbers differently (it merged or split faces) is left out
+        got = [r for r in rows if key in r and r[key][1] != "face index mismatch"]
         if got:
             cov = sum(1 for r in got if r[key][0])
-            both = sum(1 for r in got if r[key][0] and r["outcome"] == "ok")
-            lines += ["", "%s: all-quad mesh on %d of %d faces (%.1f %%); semquad and it both on %d; "
-                      "semquad only on %d; it only on %d." % (name, cov, len(got), 100.0 * cov / len(got), both,
-                                                             sum(1 for r in got if r["outcome"] == "ok" and not r[key][0]),
-                                                             sum(1 for r in got if r["outcome"] != "ok" and r[key][0]))]
+            sq = sum(1 for r in got if r["outcome"] == "ok")
+            lines += ["", "%s, on the %d faces it numbers as semquad does: all-quad mesh on %d (%.1f %%), "
+                      "semquad on %d (%.1f %%); both on %d, semquad only on %d, it only on %d."
+                      % (name, len(got), cov, 100.0 * cov / len(got), sq, 100.0 * sq / len(got),
+                         sum(1 for r in got if r[key][0] and r["outcome"] == "ok"),
+                         sum(1 for r in got if r["outcome"] == "ok" and not r[key][0]),
+                         sum(1 for r in got if r["outcome"] != "ok" and r[key][0]))]
+        elif key == "peer":
+            lines += ["", "No peer run here (`--peer CMD` or `$SQ_QUADQS`: a Gmsh 4.13 quasi-structured wrapper)."]
     return "\n".join(lines) + "\n"
 
 
@@ -251,6 +268,8 @@ def main():
         with open(args.from_json) as f:
             d = json.load(f)
         file_rows, rows = d["files"], d["faces"]
+        if args.gmsh:  # the Gmsh comparison anew on the faces of that run
+            gmsh_stage(args, file_rows, rows)
     else:
         file_rows, rows = run(args)
     md = markdown(file_rows, rows, args)
@@ -260,10 +279,13 @@ def main():
             json.dump({"files": file_rows, "faces": rows}, f, indent=1)
     if args.doc:
         rev = benchlib.source_commit(ROOT)
-        head = ("`/usr/bin/python3 bench/real_parts_bench.py PARTS --max-faces %d%s --doc docs/benchmarks.md` "
-                "with the files of bench/real_parts.md in PARTS (semquad built from commit %s, `build/` (debugoptimized), %s UTC, "
-                "shared 2-core machine, 2 faces at a time).\n\n"
-                % (args.max_faces, " --gmsh" if args.gmsh else "", rev,
+        head = ("Issue 14's real parts: the planar faces of 30 public CAD files (mechanical parts, an "
+                "assembly, sheet metal, walls with openings, NIST test parts; bench/real_parts.md lists "
+                "their sources), each meshed alone (`semquad mesh FILE --face N`) at the default size.\n\n"
+                "`/usr/bin/python3 bench/real_parts_bench.py PARTS --max-faces %d%s --doc docs/benchmarks.md` "
+                "with those files in PARTS (semquad built from commit %s, `build/` (debugoptimized), %s UTC, "
+                "shared 2-core machine under load from other builds, 2 faces at a time).\n\n"
+                % (args.max_faces, " --gmsh" if any("gmsh" in r for r in rows) else "", rev,
                    datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M")))
         benchlib.replace_section(args.doc, "Planar faces of real parts", head + md)
 
