@@ -1,0 +1,154 @@
+"""Shared by the stress-corpus and real-parts benchmarks: run one `semquad mesh`
+under a time limit, read its report, group failures, write Markdown."""
+import json
+import os
+import re
+import signal
+import subprocess
+import time
+
+
+def run_mesh(semquad, step, workdir, tag, timeout, extra=()):
+    """`semquad mesh STEP -q --report R -o M` (plus extra), killed after timeout s.
+    Returns a dict: exit (None on timeout, -N on signal N), seconds, stderr_line,
+    and the report's figures when it was written."""
+    rep = os.path.join(workdir, tag + ".json")
+    msh = os.path.join(workdir, tag + ".msh")
+    for f in (rep, msh):
+        if os.path.exists(f):
+            os.remove(f)
+    cmd = [semquad, "mesh", step, "-q", "--report", rep, "-o", msh] + list(extra)
+    t0 = time.perf_counter()
+    # a process group of its own, so a timeout kills whatever semquad started
+    p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
+                         start_new_session=True)
+    try:
+        _, err = p.communicate(timeout=timeout)
+        code = p.returncode
+    except subprocess.TimeoutExpired:
+        os.killpg(p.pid, signal.SIGKILL)
+        _, err = p.communicate()
+        code = None
+    dt = time.perf_counter() - t0
+    lines = [ln for ln in err.decode(errors="replace").splitlines() if ln.strip()]
+    # the error is semquad's own line; a library may add lines of its own after it
+    mine = [ln for ln in lines if ln.startswith("semquad:")]
+    r = {"exit": code, "seconds": round(dt, 3), "stderr_lines": len(lines),
+         "stderr": (mine or lines or [""])[-1], "stderr_all": lines[-20:]}
+    if code == 0 and os.path.exists(rep):
+        r.update(report_figures(rep))
+    for f in (rep, msh):
+        if os.path.exists(f):
+            os.remove(f)
+    return r
+
+
+def report_figures(path):
+    with open(path) as f:
+        d = json.load(f)
+    m = d.get("mesh", {})
+    lay = d.get("layout", {})
+    out = {"quads": m.get("quads"), "irregular": m.get("irregular_interior_vertices"),
+           "min_sj": m.get("min_scaled_jacobian"), "inverted": m.get("inverted"),
+           "field": d.get("field", {}).get("kind")}
+    # the key's place in the report is not settled: the layout's, the mesh's or the top level
+    gb = next((o["gauss_bonnet_min"] for o in (lay, m, d) if "gauss_bonnet_min" in o), None)
+    if gb is not None:
+        out["gauss_bonnet_min"] = gb
+        if out["irregular"] is not None:
+            out["excess"] = out["irregular"] - gb
+    return out
+
+
+def outcome(r):
+    """ok: exit 0 and every scaled Jacobian > 0; else a failure class."""
+    if r["exit"] == 0:
+        sj = r.get("min_sj")
+        if sj is not None and sj > 0:
+            return "ok"
+        return "exit 0 but min scaled Jacobian %s" % ("missing" if sj is None else "<= 0")
+    return failure_class(r)
+
+
+_NUMS = re.compile(r"[-+]?\d[\d.]*(?:e[-+]?\d+)?", re.I)
+
+
+def failure_class(r):
+    """Exit status and the message with its numbers and file names blanked, so faces
+    failing in the same place group together."""
+    if r["exit"] is None:
+        return "timeout"
+    if r["exit"] < 0:
+        return "signal %s" % signal.Signals(-r["exit"]).name
+    msg = r["stderr"]
+    msg = re.sub(r"^semquad:\s*", "", msg)
+    msg = re.sub(r"\S+\.(step|stp|brep|igs|iges|json|msh)\b:?", "FILE", msg)
+    msg = re.sub(r"\([^()]*\)", "(…)", msg)
+    msg = _NUMS.sub("N", msg)
+    words = msg.split()
+    return "exit %d: %s" % (r["exit"], " ".join(words[:9]))
+
+
+def percentile(xs, q):
+    xs = sorted(xs)
+    if not xs:
+        return float("nan")
+    k = (len(xs) - 1) * q
+    lo = int(k)
+    hi = min(lo + 1, len(xs) - 1)
+    return xs[lo] + (xs[hi] - xs[lo]) * (k - lo)
+
+
+def time_row(rows):
+    ts = [r["seconds"] for r in rows]
+    return "| %d | %.2f | %.2f | %.2f | %.2f |" % (len(ts), percentile(ts, 0.5), percentile(ts, 0.9),
+                                                   percentile(ts, 0.99), max(ts) if ts else float("nan"))
+
+
+def failure_table(rows, name_of, examples=3):
+    """Markdown table of the failure classes, most frequent first, with examples."""
+    groups = {}
+    for r in rows:
+        c = r["outcome"]
+        if c != "ok":
+            groups.setdefault(c, []).append(r)
+    out = ["| failure class | faces | examples |", "|---|---|---|"]
+    for c, rs in sorted(groups.items(), key=lambda kv: (-len(kv[1]), kv[0])):
+        ex = ", ".join("`%s`" % name_of(r) for r in rs[:examples])
+        out.append("| %s | %d | %s |" % (c.replace("|", "/"), len(rs), ex))
+    if len(out) == 2:
+        out.append("| (none) | 0 | |")
+    return out
+
+
+def common_args(ap, root, section):
+    """The options both benchmarks take."""
+    ap.add_argument("--semquad", default=os.environ.get("SEMQUAD", os.path.join(root, "build", "src", "semquad")))
+    ap.add_argument("--timeout", type=float, default=60.0, help="seconds per face (default 60)")
+    ap.add_argument("--jobs", type=int, default=2, help="faces at a time (at most 2)")
+    ap.add_argument("--json", help="write every face's record here")
+    ap.add_argument("--doc", help="replace the '%s' section of this Markdown file" % section)
+    ap.add_argument("--from-json", help="tables of this earlier --json run, no meshing")
+
+
+def source_commit(root):
+    """The last commit that changed semquad's sources (the bench files' own commits
+    do not change the binary)."""
+    return subprocess.run(["git", "-C", root, "log", "-1", "--format=%h", "--", "src", "cad", "sem", "common"],
+                          capture_output=True, text=True).stdout.strip()
+
+
+def replace_section(doc_path, title, body):
+    """Replace the `## title` section of doc_path (up to the next `## `), or append it."""
+    with open(doc_path) as f:
+        text = f.read()
+    head = "## " + title + "\n"
+    new = head + "\n" + body.rstrip("\n") + "\n"
+    i = text.find(head)
+    if i < 0:
+        text = text.rstrip("\n") + "\n\n" + new
+    else:
+        j = text.find("\n## ", i + len(head))
+        text = text[:i] + new + ("\n" + text[j + 1:] if j >= 0 else "")
+    with open(doc_path, "w") as f:
+        f.write(text)

@@ -1,0 +1,84 @@
+#!/usr/bin/python3
+"""semquad mesh on a fixed subset of the stress corpus (issue 14).
+
+The faces are written by bench/stress_corpus.py itself, seed 1, so every clone
+meshes the same faces (face i depends on the seed and i only).  The subset: the
+first two faces of each class (many_sided excepted: none is fast) that took under
+3 s (debug build) in the full benchmark, whatever their outcome then.  A valid face must mesh at the default size:
+exit 0, every scaled Jacobian > 0 (the report's min_scaled_jacobian, a positive
+number, no inverted quad) and the interior irregular vertices reported.  A face of
+class `invalid` (not a face at all: its loops cross) must be refused: exit 4, one
+line on stderr, no mesh file.  No tolerance is involved: the checks are signs and
+exit statuses.
+usage: t701-stress-corpus.py SEMQUAD STRESS_CORPUS_PY"""
+import json
+import os
+import subprocess
+import sys
+import tempfile
+
+sq, gen = sys.argv[1:3]
+sys.path.insert(0, os.path.dirname(os.path.abspath(gen)))
+try:
+    import stress_corpus  # noqa: E402 (needs Debian's python3-gmsh)
+except ImportError:
+    sys.exit(77)
+
+SEED = 1
+# the first two faces of every class that took under 3 s in the full benchmark
+# (docs/benchmarks.md, "Stress corpus"); many_sided has none (8.5 s and more)
+IDS = [1, 17, 2, 18, 3, 19, 6, 38, 7, 23, 8, 56, 9, 25, 11, 27, 13, 45, 14, 46,
+       15, 31, 16, 48, 36, 100, 37, 53, 42, 74]
+# a face that hangs fails the test instead of the whole suite waiting for it
+FACE_TIMEOUT = 120
+
+
+def check(e, tmp):
+    path = os.path.join(tmp, e["file"])
+    msh, rep = path[:-5] + ".msh", path[:-5] + ".json"
+    try:
+        p = subprocess.run([sq, "mesh", path, "-q", "-o", msh, "--report", rep],
+                           capture_output=True, text=True, timeout=FACE_TIMEOUT)
+    except subprocess.TimeoutExpired:
+        return "no answer after %d s" % FACE_TIMEOUT
+    err = [ln for ln in p.stderr.splitlines() if ln.strip()]
+    last = err[-1] if err else ""
+    if e["class"] == "invalid":
+        if p.returncode != 4:
+            return "exit %d, expected 4 (%s): %s" % (p.returncode, e["invalid_reason"], last)
+        if len(err) != 1:
+            return "refused with %d stderr lines, expected 1" % len(err)
+        if os.path.exists(msh):
+            return "refused but wrote %s" % msh
+        return None
+    if p.returncode != 0:
+        return "exit %d, expected 0: %s" % (p.returncode, last)
+    m = json.load(open(rep))["mesh"]
+    if not m.get("min_scaled_jacobian", 0) > 0 or m.get("inverted") != 0:
+        return "min scaled Jacobian %s, %s inverted, expected > 0 and 0" % (
+            m.get("min_scaled_jacobian"), m.get("inverted"))
+    if not isinstance(m.get("irregular_interior_vertices"), int):
+        return "no interior irregular vertex count in the report"
+    return None
+
+
+def main():
+    fails = 0
+    with tempfile.TemporaryDirectory() as tmp:
+        entries = stress_corpus.generate(tmp, SEED, IDS)
+        for e in entries:
+            if e["class"] != "invalid" and not e["valid"]:
+                print("%s: the generator did not write the face it drew: %s" % (e["file"], e["invalid_reason"]))
+                fails += 1
+                continue
+            why = check(e, tmp)
+            if why:
+                print("%s: %s" % (e["file"], why))
+                fails += 1
+    if fails:
+        print("%d of %d faces failed" % (fails, len(IDS)))
+    return 1 if fails else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
