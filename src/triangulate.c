@@ -5,6 +5,7 @@
 #include "tri_geom.h"
 #include "tri_lagrange.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -337,11 +338,13 @@ void sq_triangulation_free(sq_triangulation *tri)
 }
 
 /* The refinement's splits of boundary segments go into b at their arc
- * lengths.  A split point that is already on its CAD edge (to rounding: a
- * line, or a segment short against its curve's radius) is adopted as it
- * is: p becomes the polygon of b and o's vertices are renumbered into it,
- * so no second CDT is needed for it.  *nsplit counts the splits that are
- * off their curve: the CDT must be redone with their points on the curve. */
+ * lengths.  When every split point is close to its CAD edge (a line's, to
+ * rounding; a curve's, within a small part of the segment) they are
+ * adopted, moved onto the curve: p becomes the polygon of b and o's
+ * vertices are renumbered into it, so no second CDT is needed (redoing it
+ * cascaded near graded corners: 16 rounds were not enough).  *nsplit counts
+ * the splits farther off: then the CDT is redone with their points on the
+ * curve. */
 static sq_status take_splits(const cad_face *face, bpoly *p, bdisc *b, cad_cdt_output *o,
                              int *nsplit, sq_error *err)
 {
@@ -360,9 +363,21 @@ static sq_status take_splits(const cad_face *face, bpoly *p, bdisc *b, cad_cdt_o
         vs[v] = s0 + f * (s1 - s0);
         st = bdisc_insert(b, p->edge[i], vs[v], err);
         if (st == SQ_OK) st = cad_face_edge_eval(face, p->edge[i], vs[v], X, NULL, NULL, err);
-        /* 1e-9 of the segment: far below what could turn a triangle of
-         * the refinement's angle bound over */
-        if (hypot(X[0] - q[0], X[1] - q[1]) > 1e-9 * len) (*nsplit)++;
+        /* The segment ends where the next edge starts when it is the
+         * edge's last: the edges' ends may miss each other by the file's
+         * vertex tolerance, which the chord then carries to its point. */
+        double Y[2] = {c[0], c[1]};
+        if (st == SQ_OK && p->edge[p->next[i]] != p->edge[i])
+            st = cad_face_edge_eval(face, p->edge[i], s1, Y, NULL, NULL, err);
+        /* 1e-2 of the segment (a curve's sagitta on short segments; lines
+         * are within round-off): moving the point onto the curve turns its
+         * triangles' angles by less than a degree where they are above
+         * the 20-degree bound, and build_mesh's Jacobian check stays the
+         * judge (it splits what came out poor); twice the carried gap; a
+         * few roundings of the coordinates */
+        double tol = 1e-2 * len + 2.0 * f * hypot(Y[0] - c[0], Y[1] - c[1]) +
+                     16.0 * DBL_EPSILON * (fabs(q[0]) + fabs(q[1]));
+        if (hypot(X[0] - q[0], X[1] - q[1]) > tol) (*nsplit)++;
         nadopt++;
     }
     if (st != SQ_OK || *nsplit > 0 || nadopt == 0) {
