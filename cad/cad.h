@@ -195,6 +195,7 @@ typedef struct {
     double max_size;            /* longest edge bound, <= 0: none */
     cad_size_fn size;           /* optional local size bound (NULL: none) */
     void *size_ctx;
+    int max_vertices;           /* work bound: refuse beyond it (<= 0: 20 million) */
 } cad_cdt_input;
 
 typedef struct {
@@ -210,7 +211,10 @@ typedef struct {
 /* Constrained Delaunay triangulation of the region bounded by the segments
  * (minus the holes' regions), refined by CGAL's Delaunay mesher to the angle
  * and size bounds.  Refinement may split constrained segments (on_segment
- * says which).  The caller frees the output with cad_cdt_output_free. */
+ * says which).  SQ_ERR_GEOMETRY, without running on, when the bounds need
+ * more than max_vertices vertices (features far smaller than the size: a
+ * thin part, near-touching boundaries, a needle corner).  The caller frees
+ * the output with cad_cdt_output_free. */
 sq_status cad_cdt_mesh(const cad_cdt_input *in, cad_cdt_output *out, sq_error *err);
 void cad_cdt_output_free(cad_cdt_output *out); /* frees the arrays, zeroes the struct */
 

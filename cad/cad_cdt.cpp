@@ -125,7 +125,7 @@ class Criteria {
 
 typedef CGAL::Delaunay_mesher_2<CDT, Criteria> Mesher;
 
-const size_t MAX_VERTICES = 20000000; // refuse to run away with a tiny size bound
+const size_t MAX_VERTICES = 20000000; // default work bound: a tiny size bound must not run away
 
 sq_status cdt_mesh(const cad_cdt_input *in, cad_cdt_output *out, sq_error *err)
 {
@@ -182,13 +182,21 @@ sq_status cdt_mesh(const cad_cdt_input *in, cad_cdt_output *out, sq_error *err)
     std::vector<Point> seeds;
     for (int h = 0; h < in->nholes; ++h) seeds.push_back(Point(in->holes[2 * h], in->holes[2 * h + 1]));
     if (!seeds.empty()) mesher.set_seeds(seeds.begin(), seeds.end(), false, false);
+    const size_t max_vertices = in->max_vertices > 0 ? (size_t)in->max_vertices : MAX_VERTICES;
+    if (cdt.number_of_vertices() > max_vertices)
+        return SQ_FAIL(err, SQ_ERR_GEOMETRY,
+                       "the boundary alone needs %zu points, more than the %zu allowed (a size "
+                       "bound far below the face's size)",
+                       cdt.number_of_vertices(), max_vertices);
     mesher.init();
     while (!mesher.is_refinement_done()) {
         mesher.step_by_step_refine_mesh();
-        if (cdt.number_of_vertices() > MAX_VERTICES)
-            return SQ_FAIL(err, SQ_ERR_USAGE,
-                           "cad_cdt_mesh: more than %zu vertices; size bound too small?",
-                           MAX_VERTICES);
+        if (cdt.number_of_vertices() > max_vertices)
+            return SQ_FAIL(err, SQ_ERR_GEOMETRY,
+                           "a triangulation with angles above %g degrees needs more than %zu "
+                           "vertices: the face has features far below the size %g (a thin part, "
+                           "near-touching boundaries, a needle corner)",
+                           in->min_angle_deg, max_vertices, in->max_size);
     }
 
     // Output: vertices used by the triangles in the domain.

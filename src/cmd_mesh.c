@@ -1,6 +1,6 @@
 /* semquad mesh FILE [--face N] [--order Q] [--size h] [--field-order P]
  *   [--method auto|cg|dg] [--merge-distance K] [--nodes gll|equispaced]
- *   [--bl E1,E2,... --bl-first d --bl-ratio r --bl-layers n]
+ *   [--bl E1,E2,... --bl-first d --bl-ratio r --bl-layers n] [--max-quads N]
  *   [-o out.msh|.xml|.vtu] [--svg F] [--report F] [-q] */
 #include "cli.h"
 #include "quad_mesher.h"
@@ -88,6 +88,9 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
         } else if (!strcmp(a, "--bl-layers")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_int(a, val, 1, 1000, &mo.bl_layers, err));
+        } else if (!strcmp(a, "--max-quads")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            SQ_TRY(sq_cli_double(a, val, 1.0, 1e15, &mo.max_quads, err));
         } else if (!strcmp(a, "--nodes")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             if (!strcmp(val, "gll"))
@@ -122,9 +125,18 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
     char healed[1024];
     if (!args.quiet && sq_cli_heal_note(model, args.face, healed, sizeof healed))
         fprintf(stderr, "semquad: %s\n", healed);
+    /* a --size that would exhaust memory is refused before any work */
+    sq_status st = SQ_OK;
+    if (size_given) {
+        sq_face_info fi;
+        st = sq_face_info_compute(f, &fi, err);
+        if (st == SQ_OK) st = sq_mesher_check_size(fi.area, mo.size, mo.max_quads, err);
+        sq_face_info_free(&fi);
+    }
     progress(args.quiet, "semquad: read %s", args.input, t.read);
     sq_layout_result r;
-    sq_status st = sq_layout_run(f, &lo, &r, err);
+    memset(&r, 0, sizeof r);
+    if (st == SQ_OK) st = sq_layout_run(f, &lo, &r, err);
     char split[512];
     if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && !args.quiet &&
         sq_layout_note(&r, split, sizeof split))

@@ -18,6 +18,18 @@ void sq_mesher_options_default(sq_mesher_options *opt)
     opt->order = 4;
     opt->nodes = SQ_NODES_GLL;
     opt->bl_ratio = 1.2;
+    opt->max_quads = SQ_MAX_QUADS;
+}
+
+sq_status sq_mesher_check_size(double area, double size, double max_quads, sq_error *err)
+{
+    double quads = fabs(area) / (size * size);
+    if (!(quads <= max_quads))
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "--size %g gives about %.3g quads, more than --max-quads %.3g: a size of "
+                       "%.3g or more fits",
+                       size, quads, max_quads, sqrt(fabs(area) / max_quads));
+    return SQ_OK;
 }
 
 static int is_quad(const sq_layout_patch *p) { return p->ncorners == 4 && p->ncycles == 1; }
@@ -28,6 +40,15 @@ static long side_count(const sq_layout_patch *p, int k, const int *n)
     long c = 0;
     for (int h = p->side_start[k]; h < p->side_start[k + 1]; h++) c += n[p->half[h].edge];
     return c;
+}
+
+/* Quads of a quantization: the product of each patch's two side counts. */
+static double quantized_quads(const sq_layout *L, const int *n)
+{
+    double quads = 0.0;
+    for (int q = 0; q < L->npatches; q++)
+        quads += (double)side_count(&L->patches[q], 0, n) * (double)side_count(&L->patches[q], 1, n);
+    return quads;
 }
 
 /* Boundary layers (Marcon 2019 §3.4): an edge leaving a boundary-layer
@@ -952,6 +973,14 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
     if (st == SQ_OK && (!elen || !cum)) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK) st = size_measure(L, face, info, opt, grade, elen, cum, err);
     if (st == SQ_OK) st = quantize(L, elen, size, grade, opt, en.n, err);
+    /* the quantization can exceed area / size^2 (one segment at least per
+     * chord, sides matched): check its own count before allocating */
+    double nquads = st == SQ_OK ? quantized_quads(L, en.n) : 0.0;
+    if (st == SQ_OK && opt->max_quads > 0.0 && nquads > opt->max_quads)
+        st = SQ_FAIL(err, SQ_ERR_USAGE,
+                     "the layout's chords at size %g give %.3g quads, more than --max-quads %.3g; "
+                     "try a size of %.3g or more",
+                     size, nquads, opt->max_quads, size * sqrt(nquads / opt->max_quads));
     /* Design 2: the vertices of every edge, once, by arc length; ids: the
      * layout's nodes first */
     long next_id = L->nnodes;

@@ -43,12 +43,24 @@ typedef struct {
      * e^H, Jezdimirović 2021 eq. 21) the target size is size * e^H, so the
      * chords follow the per-patch parametrization's scale */
     const sq_cross_field *field;
+    /* refuse (SQ_ERR_USAGE) a quantization with more quads than this,
+     * before the quads are allocated (default SQ_MAX_QUADS) */
+    double max_quads;
 } sq_mesher_options;
+
+/* 2e7 quads of order 4 take about 10 GB (25 nodes of 16 bytes each, the
+ * vertex grid, the relaxation's arrays and the writers' copies). */
+#define SQ_MAX_QUADS 2e7
 
 void sq_mesher_options_default(sq_mesher_options *opt);
 
 /* The target size where sq_mesher_options.size is not set: sqrt(area)/8. */
 double sq_mesher_default_size(const sq_layout *L);
+
+/* Refuse (SQ_ERR_USAGE) a size whose quads, about area / size^2, are more
+ * than max_quads, naming the smallest size that fits: a check before any
+ * work, from the face's area alone. */
+sq_status sq_mesher_check_size(double area, double size, double max_quads, sq_error *err);
 
 /* info: the face (its vertices tell which edges a corner joins). */
 sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const sq_layout *L,

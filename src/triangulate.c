@@ -5,6 +5,7 @@
 #include "tri_geom.h"
 #include "tri_lagrange.h"
 
+#include <float.h>
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -29,29 +30,69 @@ static void bdisc_free(bdisc *b)
     memset(b, 0, sizeof *b);
 }
 
+/* Append s to edge e's list; bdisc_sort orders the lists before use. */
 static sq_status bdisc_insert(bdisc *b, int e, double s, sq_error *err)
 {
-    int i = b->n[e];
-    if (i == b->cap[e]) {
+    if (b->n[e] == b->cap[e]) {
         int cap = 2 * b->cap[e] + 8;
         double *p = realloc(b->s[e], sizeof(double) * (size_t)cap);
         if (!p) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
         b->s[e] = p;
         b->cap[e] = cap;
     }
-    while (i > 0 && b->s[e][i - 1] > s) {
-        b->s[e][i] = b->s[e][i - 1];
-        i--;
-    }
-    b->s[e][i] = s;
-    b->n[e]++;
+    b->s[e][b->n[e]++] = s;
     return SQ_OK;
 }
+
+static int cmp_double(const void *a, const void *b)
+{
+    double x = *(const double *)a, y = *(const double *)b;
+    return (x > y) - (x < y);
+}
+
+/* Sort every edge's arc lengths and drop repeats (a split can land on a
+ * point already there): a round inserts many splits, so sorting once beats
+ * keeping the lists sorted insert by insert, quadratic on thin faces. */
+static void bdisc_sort(bdisc *b)
+{
+    for (int e = 0; e < b->nedges; e++) {
+        if (b->n[e] < 2) continue;
+        qsort(b->s[e], (size_t)b->n[e], sizeof(double), cmp_double);
+        int m = 1;
+        for (int k = 1; k < b->n[e]; k++)
+            if (b->s[e][k] != b->s[e][m - 1]) b->s[e][m++] = b->s[e][k];
+        b->n[e] = m;
+    }
+}
+
+/* Index of arc length s of edge e in the sorted lists (-1 if absent). */
+static int bdisc_index(const bdisc *b, int e, double s)
+{
+    int first = 0;
+    for (int k = 0; k < e; k++) first += b->n[k];
+    const double *hit = bsearch(&s, b->s[e], (size_t)b->n[e], sizeof(double), cmp_double);
+    return hit ? first + (int)(hit - b->s[e]) : -1;
+}
+
+typedef struct {
+    double x;
+    int i;
+} sorted_x;
 
 typedef struct {
     const sq_tri_options *opt;
     double size;
+    sorted_x *byx; /* extra points sorted by x (size_ctx_init) */
+    double hmin;   /* smallest size at an extra point */
 } size_ctx;
+
+/* Size at xy due to extra point i: its own size growing with the distance. */
+static double extra_h(const sq_tri_options *opt, double h0, double growth, int i,
+                      const double xy[2])
+{
+    double d = hypot(xy[0] - opt->extra_xy[2 * i], xy[1] - opt->extra_xy[2 * i + 1]);
+    return (opt->extra_sizes ? opt->extra_sizes[i] : h0) + growth * d;
+}
 
 double sq_tri_graded_size(const sq_tri_options *opt, double size, const double xy[2])
 {
@@ -59,17 +100,67 @@ double sq_tri_graded_size(const sq_tri_options *opt, double size, const double x
     const double growth = opt->extra_growth > 0.0 ? opt->extra_growth : 0.5;
     double h = size;
     for (int i = 0; i < opt->nextra; i++) {
-        double d = hypot(xy[0] - opt->extra_xy[2 * i], xy[1] - opt->extra_xy[2 * i + 1]);
-        double hi = (opt->extra_sizes ? opt->extra_sizes[i] : h0) + growth * d;
+        double hi = extra_h(opt, h0, growth, i, xy);
         if (hi < h) h = hi;
     }
     return h;
 }
 
+static int cmp_by_x(const void *a, const void *b)
+{
+    const sorted_x *p = a, *q = b;
+    if (p->x != q->x) return (p->x > q->x) - (p->x < q->x);
+    return (p->i > q->i) - (p->i < q->i);
+}
+
+static void size_ctx_free(size_ctx *c)
+{
+    free(c->byx);
+}
+
+/* The extra points sorted by x, so that graded_size looks only at those
+ * within reach: with hundreds of corners (a 500-gon) the sum over all of
+ * them at every CGAL query was the triangulation's whole cost. */
+static sq_status size_ctx_init(size_ctx *c, const sq_tri_options *opt, double size, sq_error *err)
+{
+    *c = (size_ctx){opt, size, NULL, HUGE_VAL};
+    int n = opt->nextra;
+    c->byx = malloc(sizeof(sorted_x) * ((size_t)n + 1));
+    if (!c->byx) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    const double h0 = opt->extra_size > 0.0 ? opt->extra_size : size / 8.0;
+    for (int i = 0; i < n; i++) {
+        c->byx[i] = (sorted_x){opt->extra_xy[2 * i], i};
+        double hi = opt->extra_sizes ? opt->extra_sizes[i] : h0;
+        if (hi < c->hmin) c->hmin = hi;
+    }
+    if (n > 1) qsort(c->byx, (size_t)n, sizeof(sorted_x), cmp_by_x);
+    return SQ_OK;
+}
+
+/* sq_tri_graded_size, the same minimum (exactly: a minimum does not depend
+ * on the order), over the points whose x is close enough to matter. */
 static double graded_size(const double xy[2], void *p)
 {
     const size_ctx *c = p;
-    return sq_tri_graded_size(c->opt, c->size, xy);
+    const sq_tri_options *opt = c->opt;
+    const double h0 = opt->extra_size > 0.0 ? opt->extra_size : c->size / 8.0;
+    const double growth = opt->extra_growth > 0.0 ? opt->extra_growth : 0.5;
+    int n = opt->nextra, lo = 0, hi = n;
+    while (lo < hi) { /* first point with x >= xy[0] */
+        int mid = (lo + hi) / 2;
+        if (c->byx[mid].x < xy[0]) lo = mid + 1;
+        else hi = mid;
+    }
+    double h = c->size;
+    for (int j = lo; j < n && c->hmin + growth * (c->byx[j].x - xy[0]) < h; j++) {
+        double hj = extra_h(opt, h0, growth, c->byx[j].i, xy);
+        if (hj < h) h = hj;
+    }
+    for (int j = lo - 1; j >= 0 && c->hmin + growth * (xy[0] - c->byx[j].x) < h; j--) {
+        double hj = extra_h(opt, h0, growth, c->byx[j].i, xy);
+        if (hj < h) h = hj;
+    }
+    return h;
 }
 
 /* Step 1 of the design: equidistribute rho(s) = 1/size(x(s)) + |k(s)|/max_turn,
@@ -91,6 +182,7 @@ static sq_status bdisc_initial(const cad_face *face, const size_ctx *sc, double 
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
         goto done;
     }
+    int npts = 0; /* over all loops */
     for (int l = 0; l < cad_face_num_loops(face) && st == SQ_OK; l++) {
         int first = cad_face_loop_first_edge(face, l), n = cad_face_loop_num_edges(face, l);
         int total = 0, longest = first;
@@ -105,9 +197,18 @@ static sq_status bdisc_initial(const cad_face *face, const size_ctx *sc, double 
                 if (k > 0) cum[k] = cum[k - 1] + 0.5 * (rho + rho_prev) * L / NS;
                 rho_prev = rho;
             }
+            int budget = sc->opt->max_vertices;
+            if (st == SQ_OK && budget > 0 && !(npts + cum[NS] <= budget)) {
+                st = SQ_FAIL(err, SQ_ERR_GEOMETRY,
+                             "the boundary alone needs more than %d points at the size %g (the "
+                             "size is far below the face's size)",
+                             budget, sc->size);
+                break;
+            }
             nseg[e] = (int)ceil(cum[NS] - 1e-9);
             if (nseg[e] < 1) nseg[e] = 1;
             total += nseg[e];
+            npts += nseg[e];
             if (st != SQ_OK) break;
             /* invert the cumulative density at equal steps */
             if ((st = bdisc_insert(b, e, 0.0, err)) != SQ_OK) break;
@@ -224,6 +325,7 @@ void sq_tri_options_default(sq_tri_options *opt)
     opt->size = 0.0;
     opt->min_angle_deg = 20.0;
     opt->max_turn_deg = 30.0;
+    opt->max_vertices = SQ_TRI_MAX_VERTICES;
 }
 
 void sq_triangulation_free(sq_triangulation *tri)
@@ -235,10 +337,82 @@ void sq_triangulation_free(sq_triangulation *tri)
     memset(tri, 0, sizeof *tri);
 }
 
-/* One CDT of the current polygon.  On return *nsplit counts boundary
- * segments the refinement split; their split points were added to b. */
+/* The refinement's splits of boundary segments go into b at their arc
+ * lengths.  When every split point is close to its CAD edge (a line's, to
+ * rounding; a curve's, within a small part of the segment) they are
+ * adopted, moved onto the curve: p becomes the polygon of b and o's
+ * vertices are renumbered into it, so no second CDT is needed (redoing it
+ * cascaded near graded corners: 16 rounds were not enough).  *nsplit counts
+ * the splits farther off: then the CDT is redone with their points on the
+ * curve. */
+static sq_status take_splits(const cad_face *face, bpoly *p, bdisc *b, cad_cdt_output *o,
+                             int *nsplit, sq_error *err)
+{
+    double *vs = malloc(sizeof(double) * ((size_t)o->nverts + 1));
+    if (!vs) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    int nadopt = 0;
+    sq_status st = SQ_OK;
+    *nsplit = 0;
+    for (int v = 0; v < o->nverts && st == SQ_OK; v++) {
+        int i = o->on_segment[v];
+        if (i < 0) continue;
+        const double *a = &p->xy[2 * i], *c = &p->xy[2 * p->next[i]], *q = &o->xy[2 * v];
+        double len = hypot(c[0] - a[0], c[1] - a[1]);
+        double f = hypot(q[0] - a[0], q[1] - a[1]) / len, X[2];
+        double s0 = p->s[i], s1 = seg_end_s(face, p, i);
+        vs[v] = s0 + f * (s1 - s0);
+        st = bdisc_insert(b, p->edge[i], vs[v], err);
+        if (st == SQ_OK) st = cad_face_edge_eval(face, p->edge[i], vs[v], X, NULL, NULL, err);
+        /* The segment ends where the next edge starts when it is the
+         * edge's last: the edges' ends may miss each other by the file's
+         * vertex tolerance, which the chord then carries to its point. */
+        double Y[2] = {c[0], c[1]};
+        if (st == SQ_OK && p->edge[p->next[i]] != p->edge[i])
+            st = cad_face_edge_eval(face, p->edge[i], s1, Y, NULL, NULL, err);
+        /* 1e-2 of the segment (a curve's sagitta on short segments; lines
+         * are within round-off): moving the point onto the curve turns its
+         * triangles' angles by less than a degree where they are above
+         * the 20-degree bound, and build_mesh's Jacobian check stays the
+         * judge (it splits what came out poor); twice the carried gap; a
+         * few roundings of the coordinates */
+        double tol = 1e-2 * len + 2.0 * f * hypot(Y[0] - c[0], Y[1] - c[1]) +
+                     16.0 * DBL_EPSILON * (fabs(q[0]) + fabs(q[1]));
+        if (hypot(X[0] - q[0], X[1] - q[1]) > tol) (*nsplit)++;
+        nadopt++;
+    }
+    if (st != SQ_OK || *nsplit > 0 || nadopt == 0) {
+        free(vs);
+        return st;
+    }
+    bpoly q = {0};
+    bdisc_sort(b);
+    st = bpoly_build(face, b, &q, err);
+    for (int v = 0; v < o->nverts && st == SQ_OK; v++) {
+        int i = o->on_segment[v], src = o->source[v];
+        int k = i >= 0       ? bdisc_index(b, p->edge[i], vs[v])
+                : src < 0    ? -1
+                : src < p->np ? bdisc_index(b, p->edge[src], p->s[src])
+                             : q.np + src - p->np; /* an extra point */
+        if (i < 0 && src < 0) continue;
+        if (k < 0)
+            st = SQ_FAIL(err, SQ_ERR_INTERNAL, "boundary point %d lost in the discretization", v);
+        else if (k < q.np) {
+            o->xy[2 * v] = q.xy[2 * k];
+            o->xy[2 * v + 1] = q.xy[2 * k + 1];
+        }
+        o->source[v] = k;
+        o->on_segment[v] = -1;
+    }
+    free(vs);
+    bpoly_free(p);
+    *p = q;
+    return st;
+}
+
+/* One CDT of the current polygon p.  On return *nsplit counts boundary
+ * segments the refinement split off their curves (take_splits). */
 static sq_status cdt_round(const cad_face *face, const sq_tri_options *opt, size_ctx *sc,
-                           const bpoly *p, bdisc *b, cad_cdt_output *out, int *nsplit,
+                           bpoly *p, bdisc *b, cad_cdt_output *out, int *nsplit,
                            sq_error *err)
 {
     int np = p->np, nl = cad_face_num_loops(face);
@@ -274,19 +448,10 @@ static sq_status cdt_round(const cad_face *face, const sq_tri_options *opt, size
                         .min_angle_deg = opt->min_angle_deg,
                         .max_size = sc->size,
                         .size = opt->nextra ? graded_size : NULL,
-                        .size_ctx = sc};
+                        .size_ctx = sc,
+                        .max_vertices = opt->max_vertices};
     if ((st = cad_cdt_mesh(&in, out, err)) != SQ_OK) goto done;
-    *nsplit = 0;
-    for (int v = 0; v < out->nverts && st == SQ_OK; v++) {
-        int i = out->on_segment[v];
-        if (i < 0) continue;
-        const double *a = &p->xy[2 * i], *c = &p->xy[2 * p->next[i]], *q = &out->xy[2 * v];
-        double len = hypot(c[0] - a[0], c[1] - a[1]);
-        double f = hypot(q[0] - a[0], q[1] - a[1]) / len;
-        double s0 = p->s[i], s1 = seg_end_s(face, p, i);
-        st = bdisc_insert(b, p->edge[i], s0 + f * (s1 - s0), err);
-        (*nsplit)++;
-    }
+    st = take_splits(face, p, b, out, nsplit, err);
 done:
     free(xy);
     free(seg);
@@ -415,17 +580,19 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
         size = sq_tri_size(opt, info.area);
         sq_face_info_free(&info);
     }
-    size_ctx sc = {opt, size};
+    size_ctx sc;
     bdisc b = {0};
     bpoly p = {0};
     cad_cdt_output o = {0};
-    sq_status st = bdisc_initial(face, &sc, opt->max_turn_deg * M_PI / 180.0, &b, err);
+    sq_status st = size_ctx_init(&sc, opt, size, err);
+    if (st == SQ_OK) st = bdisc_initial(face, &sc, opt->max_turn_deg * M_PI / 180.0, &b, err);
     int round = 0, done = 0;
     for (; st == SQ_OK && !done && round < MAX_ROUNDS; round++) {
         int nsplit = 0, nbad = 0;
         bpoly_free(&p);
         cad_cdt_output_free(&o);
         sq_triangulation_free(out);
+        bdisc_sort(&b);
         if ((st = bpoly_build(face, &b, &p, err)) != SQ_OK) break;
         if ((st = cdt_round(face, opt, &sc, &p, &b, &o, &nsplit, err)) != SQ_OK) break;
         if (nsplit) continue;
@@ -445,5 +612,6 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
     bpoly_free(&p);
     cad_cdt_output_free(&o);
     bdisc_free(&b);
+    size_ctx_free(&sc);
     return st;
 }

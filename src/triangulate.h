@@ -31,7 +31,16 @@ typedef struct {
     const double *extra_sizes; /* per extra point instead of extra_size (NULL:
                                   extra_size at all of them) */
     double extra_growth;  /* <= 0: 1/2 */
+    int max_vertices;     /* work bound (default SQ_TRI_MAX_VERTICES): beyond
+                             it the face is refused (SQ_ERR_GEOMETRY) */
 } sq_tri_options;
+
+/* The coarse triangulation carries a field of order up to 12 on every
+ * triangle: 20000 vertices (about 40000 triangles) is already far beyond
+ * any face whose features the size resolves, and CGAL reaches it in about a
+ * second; a face that needs more (aspect 1e6, a needle corner graded to
+ * 1e-7 of the size) is refused rather than left running. */
+#define SQ_TRI_MAX_VERTICES 20000
 
 void sq_tri_options_default(sq_tri_options *opt);
 

@@ -1,0 +1,67 @@
+#!/bin/sh
+# Extreme geometry in bounded time (issue 14): faces built here with Gmsh's
+# OpenCASCADE kernel (Debian's python3-gmsh; skipped, 77, without it).
+#  - a 1 x 1e-6 sliver: refused, exit 4 with one line, within seconds (its
+#    isotropic coarse triangulation needs ~1e6 triangles: the work bound);
+#  - a 9.5-degree parallelogram and a 0.6-degree needle: the field's graded
+#    coarse triangulation comes out (no "16 refinements"), within seconds;
+#  - a 500-sided polygon: its triangulation (every corner graded) in seconds;
+#  - --max-quads: a size past it is refused before any work (exit 2, one
+#    line, no output file), naming the size that fits.
+# Each run is bounded by `timeout` (seconds, far above the ~1-3 s they take,
+# against a shared machine) so that a hang fails the test with its name.
+# usage: t615-extreme.sh SEMQUAD EXAMPLES_DIR
+set -u
+sq=$1
+ex=$2
+py=/usr/bin/python3
+[ -x "$py" ] && "$py" -c 'import gmsh' 2>/dev/null || exit 77
+tmp=$(mktemp -d)
+trap 'rm -rf "$tmp"' EXIT
+fails=0
+fail() { echo "$1"; fails=$((fails + 1)); }
+
+"$py" - "$tmp" >/dev/null <<'PY' || exit 1
+import math, sys, gmsh
+d = sys.argv[1]
+gmsh.initialize(); gmsh.option.setNumber("General.Terminal", 0)
+occ = gmsh.model.occ
+def poly(pts):
+    p = [occ.addPoint(x, y, 0) for x, y in pts]
+    return occ.addPlaneSurface([occ.addCurveLoop(
+        [occ.addLine(p[i], p[(i + 1) % len(p)]) for i in range(len(p))])])
+faces = {
+    "sliver": lambda: occ.addRectangle(0, 0, 0, 1, 1e-6),
+    "parallelogram": lambda: poly([(0, 0), (1, 0), (1.2619, 0.0436136), (0.2619, 0.0436136)]),
+    "needle": lambda: poly([(0, 0), (1, 0), (1, 0.01)]),
+    "poly500": lambda: poly([(math.cos(2 * math.pi * k / 500), math.sin(2 * math.pi * k / 500))
+                             for k in range(500)]),
+}
+for name, build in faces.items():
+    gmsh.model.add(name); build(); occ.synchronize()
+    gmsh.write(f"{d}/{name}.step"); gmsh.model.remove()
+gmsh.finalize()
+PY
+
+# one line on stderr and the expected status
+expect() { # name status timeout command...
+    name=$1 want=$2 limit=$3
+    shift 3
+    timeout "$limit" "$@" >/dev/null 2>"$tmp/err"
+    got=$?
+    [ "$got" -eq "$want" ] || fail "$name: exit $got, expected $want: $(head -c 300 "$tmp/err")"
+    [ "$want" -eq 0 ] || [ "$(wc -l <"$tmp/err")" -eq 1 ] ||
+        fail "$name: not one line on stderr: $(cat "$tmp/err")"
+}
+
+expect sliver 4 30 "$sq" mesh "$tmp/sliver.step" -q -o "$tmp/s.msh"
+grep -q "needs more than 20000 vertices" "$tmp/err" || fail "sliver: not the work bound: $(cat "$tmp/err")"
+[ ! -e "$tmp/s.msh" ] || fail "sliver: output file left behind"
+expect parallelogram 0 30 "$sq" field "$tmp/parallelogram.step"
+expect needle 0 30 "$sq" field "$tmp/needle.step"
+expect poly500 0 30 "$sq" triangulate "$tmp/poly500.step" --order 8
+expect max-quads 2 30 "$sq" mesh "$ex/square.step" --size 0.01 --max-quads 1000 -q -o "$tmp/q.msh"
+grep -q "a size of 0.0316 or more fits" "$tmp/err" || fail "max-quads: no fitting size: $(cat "$tmp/err")"
+[ ! -e "$tmp/q.msh" ] || fail "max-quads: output file left behind"
+
+[ "$fails" -eq 0 ]
