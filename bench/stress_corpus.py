@@ -9,7 +9,8 @@ class, the parameters that make the face hostile, the expected area and whether 
 written file reads back as the face that was built).  Face i is drawn from a random
 generator seeded with (S, i) alone, so any subset (--ids) is the same faces a full
 run writes, on every machine: only Python's `random` (Mersenne Twister, string seed)
-and OpenCASCADE's arithmetic are involved.
+and OpenCASCADE's arithmetic are involved; a face's file is the same bytes whatever
+else is written with it.
 
 Classes (face i has class CLASSES[i % len(CLASSES)]), all built at unit size in the
 plane z = 0 and checked there (OpenCASCADE's default tolerance, 1e-7, forbids building
@@ -28,7 +29,9 @@ smaller):
   near_180      polygon with corners of 180 +- (1e-4 .. 1) degrees
   many_sided    polygon or circle-like outline of 50-500 short edges
   tilted        any of the above but the extremes, rotated out of z = 0 and moved
-  scaled        any of the above but the extremes, scaled by 10^k, k = -6..6
+  scaled        any of the above but the extremes, scaled by 10^k, k = -6..6 (in the
+                STEP text: see scale_step; at 1e-6 the file's own 1e-7 tolerance can
+                merge corners, and the manifest says so when the area read back differs)
   invalid       not a valid face, to be refused: self-intersecting outline, a hole
                 crossing the outline, a hole outside it, overlapping holes
 """

@@ -44,6 +44,7 @@
 #include <algorithm>
 #include <cmath>
 #include <cstdio>
+#include <cstring>
 
 namespace {
 
@@ -156,11 +157,11 @@ std::string describe(const sqcad::heal_record &r, const char *unit)
 {
     char buf[400];
     if (r.edge_b >= 0)
-        std::snprintf(buf, sizeof buf, "%s of %.3g %s between edges %d and %d of wire %d at (%.6g, %.6g, %.6g)",
+        std::snprintf(buf, sizeof buf, "%s of %.3g%s between edges %d and %d of wire %d at (%.6g, %.6g, %.6g)",
                       r.kind.c_str(), r.size, unit, r.edge_a, r.edge_b, r.wire, r.at[0], r.at[1],
                       r.at[2]);
     else
-        std::snprintf(buf, sizeof buf, "%s %d of wire %d (length %.3g %s) at (%.6g, %.6g, %.6g)",
+        std::snprintf(buf, sizeof buf, "%s %d of wire %d (length %.3g%s) at (%.6g, %.6g, %.6g)",
                       r.kind.c_str(), r.edge_a, r.wire, r.size, unit, r.at[0], r.at[1], r.at[2]);
     return buf;
 }
@@ -212,13 +213,16 @@ void heal_face(cad_model *m, int i, double file_tol, bool given)
     // The file's own tolerance for this face: its uncertainty or the face's
     // vertex and edge tolerances, whichever is larger.
     const double tol = given ? file_tol : std::max(m->uncertainty, face_tolerance(face));
+    // " mm" after a length, nothing when the file has no unit (BREP)
+    const std::string us = std::strcmp(m->unit, "unknown") ? std::string(" ") + m->unit : "";
+    const char *unit = us.c_str();
     if (const sqcad::heal_record *r = beyond(d, std::max(tol, prec))) {
         char buf[600];
         if (r->size > 0)
-            std::snprintf(buf, sizeof buf, "%s exceeds the healing tolerance %.3g %s (--heal-tolerance %.2g would allow it)",
-                          describe(*r, m->unit).c_str(), tol, m->unit, 1.5 * r->size);
+            std::snprintf(buf, sizeof buf, "%s exceeds the healing tolerance %.3g%s (--heal-tolerance %.2g would allow it)",
+                          describe(*r, unit).c_str(), tol, unit, 1.5 * r->size);
         else
-            std::snprintf(buf, sizeof buf, "%s cannot be healed", describe(*r, m->unit).c_str());
+            std::snprintf(buf, sizeof buf, "%s cannot be healed", describe(*r, unit).c_str());
         m->status[(size_t)i] = CAD_FACE_BROKEN;
         m->reason[(size_t)i] = buf;
         return;
@@ -230,7 +234,7 @@ void heal_face(cad_model *m, int i, double file_tol, bool given)
     if (!left.empty() || healed.IsNull()) {
         m->status[(size_t)i] = CAD_FACE_BROKEN;
         m->reason[(size_t)i] = left.empty() ? std::string("healing gave no face")
-                                            : "healing left a " + describe(left[0], m->unit);
+                                            : "healing left a " + describe(left[0], unit);
         return;
     }
     m->faces.Substitute(i + 1, healed);

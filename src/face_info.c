@@ -151,17 +151,19 @@ const char *sq_face_status_name(cad_face_status s)
     return "broken";
 }
 
-void sq_heal_text(const cad_heal *h, const char *unit, char *buf, size_t n)
+void sq_heal_text(const cad_heal *h, const char *unit_name, char *buf, size_t n)
 {
     const double *p = h->at;
+    char unit[32] = ""; /* " mm", or nothing when the file has no unit */
+    if (strcmp(unit_name, "unknown")) snprintf(unit, sizeof unit, " %s", unit_name);
     if (!strcmp(h->kind, "gap"))
-        snprintf(buf, n, "closed a %.3g %s gap between edges %d and %d of wire %d at (%.6g, %.6g, %.6g)",
+        snprintf(buf, n, "closed a %.3g%s gap between edges %d and %d of wire %d at (%.6g, %.6g, %.6g)",
                  h->size, unit, h->edge_a, h->edge_b, h->wire, p[0], p[1], p[2]);
     else if (!strcmp(h->kind, "connection"))
-        snprintf(buf, n, "joined edges %d and %d of wire %d, their vertices %.3g %s apart, at (%.6g, %.6g, %.6g)",
+        snprintf(buf, n, "joined edges %d and %d of wire %d, their vertices %.3g%s apart, at (%.6g, %.6g, %.6g)",
                  h->edge_a, h->edge_b, h->wire, h->size, unit, p[0], p[1], p[2]);
     else if (!strcmp(h->kind, "small edge"))
-        snprintf(buf, n, "merged edge %d of wire %d, %.3g %s long, at (%.6g, %.6g, %.6g)", h->edge_a,
+        snprintf(buf, n, "merged edge %d of wire %d, %.3g%s long, at (%.6g, %.6g, %.6g)", h->edge_a,
                  h->wire, h->size, unit, p[0], p[1], p[2]);
     else
         snprintf(buf, n, "fixed a %s in wire %d", h->kind, h->wire);
