@@ -66,8 +66,10 @@ static int run(const char *path, const char *name, const expect *want)
     sq_layout_options lo;
     sq_layout_options_for_mesh(&lo);
     sq_layout_result r;
-    int fails = sq_check_int(name, "status", sq_layout_run(f, &lo, &r, &err), want->status);
-    if (want->status == SQ_OK) {
+    sq_status st = sq_layout_run(f, &lo, &r, &err);
+    int fails = sq_check_int(name, "status", st, want->status);
+    if (st != want->status) printf("%s: %s\n", name, err.msg);
+    if (want->status == SQ_OK && st == SQ_OK) {
         fails += sq_check_int(name, "valid", r.valid, 1);
         fails += sq_check_int(name, "singular points", r.nsing, want->nsing);
         fails += sq_check_int(name, "gauss_bonnet_min", r.report.gauss_bonnet_min, want->gb_min);
@@ -75,7 +77,7 @@ static int run(const char *path, const char *name, const expect *want)
         fails += sq_check_int(name, "twisted", r.analysis.field.twist != 0.0, want->twisted);
         fails += sq_check_int(name, "two_step", r.report.two_step, want->two_step);
     }
-    if (want->status == SQ_OK && want->irregular >= 0) {
+    if (want->status == SQ_OK && st == SQ_OK && want->irregular >= 0) {
         sq_mesher_options mo;
         sq_mesher_options_default(&mo);
         sq_cross_field cf;
