@@ -20,6 +20,7 @@ typedef struct {
     double *bs;    /* 2*nb: arc lengths of the ends */
     lay_hit *hit;  /* the set's crossings (crossings()), nhit of them, */
     int nhit, hit_ok; /* valid while hit_ok: the set has not changed */
+    int trials;    /* patch repairs tried (try_candidate), up to MAX_TRIALS */
 } rctx;
 
 /* The crossings of the separatrix set, found once per state of the set
@@ -193,7 +194,10 @@ static sq_status trace_line(rctx *r, const double p0[2], const double d0[2], dou
     d[1] /= nd;
     int elem = -1;
     const sq_separatrix_set *S = &r->L->seps;
-    while (len < r->maxlen) {
+    /* the steps a line of maxlen takes at the default step, four times
+     * over: small steps in thin patches may not run it out of time */
+    const double budget = 4.0 * r->maxlen / r->step;
+    for (long nstep = 0; len < r->maxlen && nstep < budget; nstep++) {
         /* a line that runs between separatrices closer than the step (a
          * thin patch along the boundary) steps at half its clearance, so
          * that it follows the field there instead of jumping across */
@@ -944,12 +948,16 @@ static int tri_holding(const cad_cdt_output *o, const double p[2])
     return best;
 }
 
-/* The point of the ring's inside farthest from it (the centre of the
- * largest empty circle: among the triangles' circumcentres, Voronoi
- * vertices of the ring's points, those inside, else their centroids). */
-static void far_point(const cad_cdt_output *o, const double *ring, int nring, double cen[2])
+/* The centre of an n-quad split when the centroid will not do: among the
+ * triangles' circumcentres (Voronoi vertices of the ring's points, on its
+ * medial axis) inside the ring, else their centroids, the one that sees
+ * the most side points sp[n] along straight spokes, the farthest from the
+ * ring among those (the largest empty circle when it sees them all). */
+static void far_point(const cad_cdt_output *o, const double *ring, int nring, const double *sp,
+                      int n, double tol, double cen[2])
 {
     double best = -1.0;
+    int bestseen = -1;
     for (int t = 0; t < o->ntris; t++) {
         const double *a = &o->xy[2 * o->tri[3 * t]], *b = &o->xy[2 * o->tri[3 * t + 1]],
                      *c = &o->xy[2 * o->tri[3 * t + 2]];
@@ -961,9 +969,25 @@ static void far_point(const cad_cdt_output *o, const double *ring, int nring, do
             q[0] = (a[0] + b[0] + c[0]) / 3.0;
             q[1] = (a[1] + b[1] + c[1]) / 3.0;
         }
+        /* straight spokes seen, and all of them when no two consecutive
+         * ones are within SQ_LAYOUT_CORNER_TOL_DEG of straight (else the
+         * centre is no corner of the quad between them) */
+        int seen = 0;
+        double ang[16];
+        for (int k = 0; k < n; k++) {
+            seen += !seg_leaves(ring, nring, q, &sp[2 * k], tol);
+            if (k < 16) ang[k] = atan2(sp[2 * k + 1] - q[1], sp[2 * k] - q[0]);
+        }
+        for (int k = 0; k < n && k < 16 && seen == n; k++) {
+            double gap = remainder(ang[(k + 1) % n] - ang[k], 2.0 * M_PI);
+            if (gap < 0) gap += 2.0 * M_PI;
+            if (gap > M_PI - SQ_LAYOUT_CORNER_TOL_DEG * M_PI / 180.0) seen = n - 1;
+        }
+        if (seen < bestseen) continue;
         double dist = ring_dist(ring, nring, q);
-        if (dist > best) {
+        if (seen > bestseen || dist > best) {
             best = dist;
+            bestseen = seen;
             cen[0] = q[0];
             cen[1] = q[1];
         }
@@ -974,10 +998,11 @@ static void far_point(const cad_cdt_output *o, const double *ring, int nring, do
  * division for n = 3): a node of valence n joined to the arc-length
  * midpoints of the n sides, so that the patch becomes n quads.  The node
  * is the area centroid when straight spokes from it stay inside the
- * patch, else the point farthest from the patch's boundary; a spoke that
+ * patch, else a point of the patch's medial axis (far_point); a spoke that
  * cannot be straight follows the patch's constrained Delaunay
- * triangulation.  SQ_ERR_LAYOUT when the spokes would cross. */
-static sq_status split_centre(rctx *r, int p, sq_error *err)
+ * triangulation (only if `bent`: else SQ_ERR_LAYOUT, as when the spokes
+ * would cross). */
+static sq_status split_centre(rctx *r, int p, int bent, sq_error *err)
 {
     sq_layout *L = r->L;
     const sq_layout_patch *P = &L->patches[p];
@@ -999,17 +1024,22 @@ static sq_status split_centre(rctx *r, int p, sq_error *err)
                    lay_poly_contains(ring, nring, cen);
     for (int k = 0; k < n && straight; k++)
         straight = !seg_leaves(ring, nring, cen, &mid[2 * k], r->tol);
+    if (st == SQ_OK && !straight && !bent)
+        st = SQ_FAIL(err, SQ_ERR_LAYOUT, "patch %d: straight spokes would leave it", p);
     if (st == SQ_OK && !straight) {
         int *seg = malloc(2 * (size_t)nring * sizeof *seg);
         if (!seg) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
         for (int i = 0; i < nring && st == SQ_OK; i++) seg[2 * i] = i, seg[2 * i + 1] = (i + 1) % nring;
         cad_cdt_input in = {0};
         in.npoints = nring, in.xy = ring, in.nsegments = nring, in.seg = seg;
+        /* refined so that the candidate centres cover the patch */
+        in.min_angle_deg = 20.0;
+        in.max_size = 0.1 * sqrt(P->area);
         if (st == SQ_OK) st = cad_cdt_mesh(&in, &o, err);
         free(seg);
         if (st == SQ_OK && !(nb = tri_neighbours(&o)))
             st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-        if (st == SQ_OK) far_point(&o, ring, nring, cen);
+        if (st == SQ_OK) far_point(&o, ring, nring, mid, n, r->tol, cen);
         int t0 = st == SQ_OK ? tri_holding(&o, cen) : 0;
         for (int k = 0; k < n && st == SQ_OK; k++) {
             if (!seg_leaves(ring, nring, cen, &mid[2 * k], r->tol)) continue;
@@ -1059,7 +1089,13 @@ static sq_status split_triangle(rctx *r, int *done, sq_error *err)
     for (int p = 0; p < L->npatches && !*done; p++) {
         const sq_layout_patch *P = &L->patches[p];
         if (P->ncorners != 3 || P->ncycles != 1) continue;
-        SQ_TRY(split_centre(r, p, err));
+        sq_error e2;
+        sq_status st = split_centre(r, p, 0, &e2);
+        if (st == SQ_ERR_LAYOUT) continue; /* left to repair_polygon */
+        if (st != SQ_OK) {
+            if (err) *err = e2;
+            return st;
+        }
         L->stats.triangles_repaired++;
         *done = 1;
     }
@@ -1379,6 +1415,10 @@ static sq_status settle(rctx *r, int *ndef, sq_error *err)
     return SQ_OK;
 }
 
+/* Each trial settles the whole set: a bound on them bounds the time a face
+ * with many non-quad patches takes to be declared invalid. */
+#define MAX_TRIALS 64
+
 typedef struct {
     int patch, corner; /* corner < 0: the n-quad split */
     double dir[2];
@@ -1388,12 +1428,14 @@ typedef struct {
  * defects are left, else restore the set and its graph. */
 static sq_status try_candidate(rctx *r, const candidate *c, int before, int *kept, sq_error *err)
 {
+    *kept = 0;
+    if (r->trials++ >= MAX_TRIALS) return SQ_OK;
     snapshot s;
     SQ_TRY(snapshot_take(r->L, &s, err));
     sq_error e2;
     int ndef = INT_MAX;
     sq_status st = c->corner >= 0 ? extra_separatrix(r, c->patch, c->corner, c->dir, &e2)
-                                  : split_centre(r, c->patch, &e2);
+                                  : split_centre(r, c->patch, 1, &e2);
     if (st == SQ_OK) st = settle(r, &ndef, &e2);
     if (st == SQ_ERR_INTERNAL) {
         snapshot_free(&s);
