@@ -129,6 +129,8 @@ typedef struct {
     int valence2_split;  /* boundary valence-2 points split (Jezdimirović
                             Fig. 18); triangles_repaired counts the midpoint
                             divisions only */
+    int extra_separatrices; /* traced from a corner of a pentagon or hexagon */
+    int polygons_split;  /* n-quad splits of patches with n != 3, 4 corners */
     int iterations;      /* correction passes */
 } sq_layout_stats;
 

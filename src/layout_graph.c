@@ -492,7 +492,7 @@ static int uf_find(int *p, int x)
 }
 
 /* Winding number test of p against a closed polygon. */
-static int poly_contains(const double *xy, int n, const double p[2])
+int lay_poly_contains(const double *xy, int n, const double p[2])
 {
     int wn = 0;
     for (int i = 0; i < n; i++) {
@@ -507,8 +507,7 @@ static int poly_contains(const double *xy, int n, const double p[2])
     return wn != 0;
 }
 
-/* polygon of a cycle (sampled) */
-static double *cycle_polygon(const sq_layout *L, const sq_layout_half *h, int n, int *np)
+double *lay_cycle_polygon(const sq_layout *L, const sq_layout_half *h, int n, int *np)
 {
     int tot = 0;
     for (int k = 0; k < n; k++) tot += L->edges[h[k].edge].npts - 1;
@@ -637,13 +636,13 @@ static sq_status build_patches(gstate *g, sq_error *err)
             for (int k = 0; k < ci[o].n; k++)
                 hh[k] = (sq_layout_half){cyc[ci[o].start + k] / 2, cyc[ci[o].start + k] & 1};
             int npoly;
-            double *poly = cycle_polygon(L, hh, ci[o].n, &npoly);
+            double *poly = lay_cycle_polygon(L, hh, ci[o].n, &npoly);
             free(hh);
             if (!poly) {
                 st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
                 break;
             }
-            if (poly_contains(poly, npoly, p)) {
+            if (lay_poly_contains(poly, npoly, p)) {
                 best = ci[o].area;
                 owner[c] = ci[o].patch;
             }

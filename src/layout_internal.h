@@ -37,4 +37,12 @@ sq_status lay_sing_push(sq_layout *L, double x, double y, int valence, sq_lrole 
 /* Arc length of polyline xy[npts] up to position pos (segment + t). */
 double lay_poly_arclen(const double *xy, int npts, double pos);
 
+/* Winding-number test of p against the closed polygon xy[n]. */
+int lay_poly_contains(const double *xy, int n, const double p[2]);
+
+/* The closed polygon (*np points: each edge's polyline but its last point)
+ * of the cycle of half-edges h[n], walked in order; malloc'ed, NULL when out
+ * of memory. */
+double *lay_cycle_polygon(const sq_layout *L, const sq_layout_half *h, int n, int *np);
+
 #endif

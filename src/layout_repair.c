@@ -2,6 +2,7 @@
  * §6, Marcon 2019 §3.4). */
 #include "layout_internal.h"
 
+#include <limits.h>
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -19,6 +20,7 @@ typedef struct {
     double *bs;    /* 2*nb: arc lengths of the ends */
     lay_hit *hit;  /* the set's crossings (crossings()), nhit of them, */
     int nhit, hit_ok; /* valid while hit_ok: the set has not changed */
+    int trials;    /* patch repairs tried (try_candidate), up to MAX_TRIALS */
 } rctx;
 
 /* The crossings of the separatrix set, found once per state of the set
@@ -147,6 +149,33 @@ static sq_status line_push(line *l, const double p[2], sq_error *err)
     return SQ_OK;
 }
 
+/* Distance from x to the nearest separatrix of S, or `cap` if farther. */
+static double sep_clearance(const sq_separatrix_set *S, const double x[2], double cap)
+{
+    double best = cap;
+    for (int i = 0; i < S->n; i++) {
+        const sq_separatrix *s = &S->s[i];
+        for (int j = 0; j + 1 < s->npts; j++) {
+            const double *a = &s->xy[2 * j], *b = a + 2;
+            /* cheap reject: both ends farther than best along an axis */
+            if ((a[0] - x[0] > best && b[0] - x[0] > best) ||
+                (x[0] - a[0] > best && x[0] - b[0] > best) ||
+                (a[1] - x[1] > best && b[1] - x[1] > best) ||
+                (x[1] - a[1] > best && x[1] - b[1] > best))
+                continue;
+            double v[2] = {b[0] - a[0], b[1] - a[1]}, l2 = v[0] * v[0] + v[1] * v[1];
+            double t = l2 > 0 ? ((x[0] - a[0]) * v[0] + (x[1] - a[1]) * v[1]) / l2 : 0.0;
+            t = fmin(fmax(t, 0.0), 1.0);
+            best = fmin(best, hypot(a[0] + t * v[0] - x[0], a[1] + t * v[1] - x[1]));
+        }
+    }
+    return best;
+}
+
+/* The smallest repair step, as a fraction of the default one: a line
+ * leaving a separatrix grows its step from this by 1.5 per step. */
+#define MIN_STEP_FRACTION 0.02
+
 /* Trace a field line from p0 in direction d0 (Heun steps, as Jezdimirović
  * §6.1) until it meets the boundary (end: foot or face vertex) or a
  * separatrix of the layout (hit_sep >= 0 at hit_pos).  Hits within `skip`
@@ -165,8 +194,15 @@ static sq_status trace_line(rctx *r, const double p0[2], const double d0[2], dou
     d[1] /= nd;
     int elem = -1;
     const sq_separatrix_set *S = &r->L->seps;
-    while (len < r->maxlen) {
-        double h = r->step, d1[2], d2[2], xn[2];
+    /* the steps a line of maxlen takes at the default step, four times
+     * over: small steps in thin patches may not run it out of time */
+    const double budget = 4.0 * r->maxlen / r->step;
+    for (long nstep = 0; len < r->maxlen && nstep < budget; nstep++) {
+        /* a line that runs between separatrices closer than the step (a
+         * thin patch along the boundary) steps at half its clearance, so
+         * that it follows the field there instead of jumping across */
+        double h = r->step, d1[2], d2[2], xn[2], clear = sep_clearance(S, x, r->step);
+        if (clear < r->step) h = fmax(0.5 * clear, MIN_STEP_FRACTION * r->step);
         if (branch(r, x, &elem, d, d1)) {
             d1[0] = d[0];
             d1[1] = d[1];
@@ -630,26 +666,41 @@ static sq_status side_mid(rctx *r, const sq_layout_patch *P, int k, int *edge, d
     return sq_layout_edge_point(r->L, r->face, *edge, *frac, xy, err);
 }
 
+/* Separatrix from inserted node M along the path xy[np] (each segment cut
+ * into 16 pieces), ending in `end`. */
+static sq_status path_sep(sq_layout *L, int M, const double *xy, int np, sq_sep_end end,
+                          sq_error *err)
+{
+    enum { PIECES = 16 };
+    int n = (np - 1) * PIECES + 1;
+    double *q = malloc(2 * (size_t)n * sizeof *q);
+    if (!q) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int i = 0; i + 1 < np; i++)
+        for (int j = 0; j < PIECES + (i + 2 == np); j++) {
+            double t = (double)j / PIECES;
+            const double *a = &xy[2 * i], *b = a + 2;
+            q[2 * (i * PIECES + j)] = a[0] + t * (b[0] - a[0]);
+            q[2 * (i * PIECES + j) + 1] = a[1] + t * (b[1] - a[1]);
+        }
+    sq_status st = lay_sep_push(&L->seps, q, n, (sq_sep_end){SQ_END_SINGULAR, M, 0.0}, end, err);
+    free(q);
+    return st;
+}
+
 /* Straight separatrix from inserted node M (at a) to b, ending in `end`. */
 static sq_status straight_sep(sq_layout *L, int M, const double a[2], const double b[2],
                               sq_sep_end end, sq_error *err)
 {
-    enum { NP = 17 };
-    double xy[2 * NP];
-    for (int j = 0; j < NP; j++) {
-        double t = (double)j / (NP - 1);
-        xy[2 * j] = a[0] + t * (b[0] - a[0]);
-        xy[2 * j + 1] = a[1] + t * (b[1] - a[1]);
-    }
-    return lay_sep_push(&L->seps, xy, NP, (sq_sep_end){SQ_END_SINGULAR, M, 0.0}, end, err);
+    double xy[4] = {a[0], a[1], b[0], b[1]};
+    return path_sep(L, M, xy, 2, end, err);
 }
 
-/* A straight spoke from inserted node M (at cen) to point p on layout edge
- * `edge` at fraction frac: on the boundary it ends in a foot, on a
- * separatrix in a new T-junction, repaired next (the "patches influenced"
- * of Jezdimirović §6.3). */
-static sq_status add_spoke(rctx *r, int M, const double cen[2], int edge, double frac,
-                           const double p[2], sq_error *err)
+/* A spoke from inserted node M along path[np] (from M to point p on layout
+ * edge `edge` at fraction frac; NULL: straight from cen): on the boundary it
+ * ends in a foot, on a separatrix in a new T-junction, repaired next (the
+ * "patches influenced" of Jezdimirović §6.3). */
+static sq_status add_spoke(rctx *r, int M, const double cen[2], const double *path, int np,
+                           int edge, double frac, const double p[2], sq_error *err)
 {
     sq_layout *L = r->L;
     const sq_layout_edge *E = &L->edges[edge];
@@ -657,41 +708,393 @@ static sq_status add_spoke(rctx *r, int M, const double cen[2], int edge, double
     if (E->cad_edge >= 0) {
         end = (sq_sep_end){SQ_END_BOUNDARY, E->cad_edge, E->s0 + frac * (E->s1 - E->s0)};
     } else {
+        double q[2] = {p[0], p[1]}, dist;
+        /* the edge's separatrix, unless an earlier spoke split it before q */
         int sep = E->sep;
-        double q[2] = {p[0], p[1]};
+        double pos = nearest_pos(&L->seps.s[sep], q, &dist);
+        for (int k = 0; k < L->seps.n && dist > r->tol; k++) {
+            double d, ps = nearest_pos(&L->seps.s[k], q, &d);
+            if (d < dist) sep = k, pos = ps, dist = d;
+        }
         SQ_TRY(lay_sing_push(L, q[0], q[1], 3, SQ_LROLE_TJUNCTION, err));
         end = (sq_sep_end){SQ_END_SINGULAR, L->nsing - 1, 0.0};
-        double pos = nearest_pos(&L->seps.s[sep], q, NULL);
         SQ_TRY(split_sep(L, sep, pos, q, L->nsing - 1, err));
     }
+    if (path) return path_sep(L, M, path, np, end, err);
     return straight_sep(L, M, cen, p, end, err);
 }
 
-/* Triangular patch: midpoint division (Marcon §3.4, Fig. 13): a valence-3
- * node at the centroid, straight spokes to the three side midpoints; a
- * midpoint on a separatrix is a T-junction repaired next. */
+/* ---- the n-quad split: a centre joined to the sides' midpoints ----------- */
+
+/* Distance from p to the closed polygon ring[n]. */
+static double ring_dist(const double *ring, int n, const double p[2])
+{
+    double best = HUGE_VAL;
+    for (int i = 0; i < n; i++) {
+        const double *a = &ring[2 * i], *b = &ring[2 * ((i + 1) % n)];
+        double v[2] = {b[0] - a[0], b[1] - a[1]}, l2 = v[0] * v[0] + v[1] * v[1];
+        double t = l2 > 0 ? ((p[0] - a[0]) * v[0] + (p[1] - a[1]) * v[1]) / l2 : 0.0;
+        t = fmin(fmax(t, 0.0), 1.0);
+        best = fmin(best, hypot(a[0] + t * v[0] - p[0], a[1] + t * v[1] - p[1]));
+    }
+    return best;
+}
+
+/* Does segment a-b meet the closed polygon ring[n] farther than tol from b? */
+static int seg_leaves(const double *ring, int n, const double a[2], const double b[2], double tol)
+{
+    for (int i = 0; i < n; i++) {
+        const double *p = &ring[2 * i], *q = &ring[2 * ((i + 1) % n)];
+        double t, u;
+        if (!seg_seg(a, b, p, q, &t, &u)) continue;
+        double x = a[0] + t * (b[0] - a[0]), y = a[1] + t * (b[1] - a[1]);
+        if (hypot(x - b[0], y - b[1]) > tol) return 1;
+    }
+    return 0;
+}
+
+/* Polylines a[na] and b[nb] meet other than at their common first point? */
+static int paths_cross(const double *a, int na, const double *b, int nb, double tol)
+{
+    for (int i = 0; i + 1 < na; i++)
+        for (int j = 0; j + 1 < nb; j++) {
+            double t, u;
+            if (!seg_seg(&a[2 * i], &a[2 * i + 2], &b[2 * j], &b[2 * j + 2], &t, &u)) continue;
+            double x = a[2 * i] + t * (a[2 * i + 2] - a[2 * i]);
+            double y = a[2 * i + 1] + t * (a[2 * i + 3] - a[2 * i + 1]);
+            if (hypot(x - a[0], y - a[1]) > tol) return 1;
+        }
+    return 0;
+}
+
+/* The patch's outer ring with the n side points sp[n] inserted (each on the
+ * ring segment nearest it, in walking order); at[k]: the index of side
+ * point k in *ring. */
+static sq_status ring_with_points(const sq_layout *L, const sq_layout_patch *P, const double *sp,
+                                  int n, double **ring, int *nring, int *at, sq_error *err)
+{
+    int m;
+    double *poly = lay_cycle_polygon(L, P->half, P->cycle_start[1], &m);
+    double *out = malloc(2 * (size_t)(m + n) * sizeof *out);
+    int *seg = malloc((size_t)(n > 0 ? n : 1) * sizeof *seg);
+    double *par = malloc((size_t)(n > 0 ? n : 1) * sizeof *par);
+    if (!poly || !out || !seg || !par) {
+        free(poly), free(out), free(seg), free(par);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    for (int k = 0; k < n; k++) {
+        double best = HUGE_VAL;
+        for (int i = 0; i < m; i++) {
+            const double *a = &poly[2 * i], *b = &poly[2 * ((i + 1) % m)];
+            double v[2] = {b[0] - a[0], b[1] - a[1]}, l2 = v[0] * v[0] + v[1] * v[1];
+            double t = l2 > 0 ? ((sp[2 * k] - a[0]) * v[0] + (sp[2 * k + 1] - a[1]) * v[1]) / l2
+                              : 0.0;
+            t = fmin(fmax(t, 0.0), 1.0);
+            double d = hypot(a[0] + t * v[0] - sp[2 * k], a[1] + t * v[1] - sp[2 * k + 1]);
+            if (d < best) best = d, seg[k] = i, par[k] = t;
+        }
+    }
+    int c = 0;
+    for (int i = 0; i < m; i++) {
+        out[2 * c] = poly[2 * i];
+        out[2 * c + 1] = poly[2 * i + 1];
+        c++;
+        /* the points on segment i, by their parameter (n is small) */
+        double last = -1.0;
+        for (;;) {
+            int pick = -1;
+            for (int k = 0; k < n; k++)
+                if (seg[k] == i && par[k] > last && (pick < 0 || par[k] < par[pick])) pick = k;
+            if (pick < 0) break;
+            last = par[pick];
+            out[2 * c] = sp[2 * pick];
+            out[2 * c + 1] = sp[2 * pick + 1];
+            at[pick] = c++;
+        }
+    }
+    free(poly), free(seg), free(par);
+    *ring = out;
+    *nring = c;
+    return SQ_OK;
+}
+
+typedef struct {
+    long key;
+    int e; /* 3 * triangle + edge */
+} edge_key;
+
+static int cmp_edge_key(const void *a, const void *b)
+{
+    const edge_key *x = a, *y = b;
+    if (x->key != y->key) return x->key < y->key ? -1 : 1;
+    return x->e - y->e;
+}
+
+/* nb[3t + j]: the triangle across edge j (vertices j, j+1) of triangle t,
+ * -1 on the rim; malloc'ed, NULL when out of memory. */
+static int *tri_neighbours(const cad_cdt_output *o)
+{
+    size_t n3 = 3 * (size_t)(o->ntris > 0 ? o->ntris : 1);
+    int *nb = malloc(n3 * sizeof *nb);
+    edge_key *k = malloc(n3 * sizeof *k);
+    if (!nb || !k) {
+        free(nb), free(k);
+        return NULL;
+    }
+    long nv = o->nverts;
+    for (int e = 0; e < 3 * o->ntris; e++) {
+        long a = o->tri[e], b = o->tri[3 * (e / 3) + (e % 3 + 1) % 3];
+        k[e] = (edge_key){a < b ? a * nv + b : b * nv + a, e};
+        nb[e] = -1;
+    }
+    qsort(k, (size_t)(3 * o->ntris), sizeof *k, cmp_edge_key);
+    for (int i = 0; i + 1 < 3 * o->ntris; i++)
+        if (k[i].key == k[i + 1].key) {
+            nb[k[i].e] = k[i + 1].e / 3;
+            nb[k[i + 1].e] = k[i].e / 3;
+        }
+    free(k);
+    return nb;
+}
+
+/* A path inside the ring from c (in triangle t0) to triangulation vertex
+ * v: through the midpoints of the edges the breadth-first triangle walk
+ * crosses, then shortened wherever a straight piece stays inside.  *path
+ * malloc'ed (*np points, c first, v last). */
+static sq_status cdt_path(const cad_cdt_output *o, const int *nb, const double *ring, int nring,
+                          const double c[2], int t0, int v, double tol, double **path, int *np,
+                          sq_error *err)
+{
+    int nt = o->ntris;
+    int *from = malloc((size_t)nt * sizeof *from), *queue = malloc((size_t)nt * sizeof *queue);
+    double *raw = malloc(2 * (size_t)(nt + 2) * sizeof *raw);
+    if (!from || !queue || !raw) {
+        free(from), free(queue), free(raw);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    for (int t = 0; t < nt; t++) from[t] = -2;
+    int head = 0, tail = 0, goal = -1;
+    from[t0] = -1;
+    queue[tail++] = t0;
+    while (head < tail && goal < 0) {
+        int t = queue[head++];
+        for (int j = 0; j < 3; j++) {
+            if (o->tri[3 * t + j] == v) goal = t;
+            int u = nb[3 * t + j];
+            if (u >= 0 && from[u] == -2) {
+                from[u] = t;
+                queue[tail++] = u;
+            }
+        }
+    }
+    int n = 0;
+    if (goal >= 0) { /* v, the crossed edges' midpoints back to t0, c */
+        raw[2 * n] = o->xy[2 * v], raw[2 * n + 1] = o->xy[2 * v + 1], n++;
+        for (int t = goal; from[t] >= 0; t = from[t]) {
+            int s = from[t];
+            for (int j = 0; j < 3; j++)
+                if (nb[3 * s + j] == t) {
+                    int a = o->tri[3 * s + j], b = o->tri[3 * s + (j + 1) % 3];
+                    raw[2 * n] = 0.5 * (o->xy[2 * a] + o->xy[2 * b]);
+                    raw[2 * n + 1] = 0.5 * (o->xy[2 * a + 1] + o->xy[2 * b + 1]);
+                    n++;
+                    break;
+                }
+        }
+        raw[2 * n] = c[0], raw[2 * n + 1] = c[1], n++;
+    }
+    free(from), free(queue);
+    if (goal < 0) {
+        free(raw);
+        return SQ_FAIL(err, SQ_ERR_LAYOUT, "no path inside the patch to a side");
+    }
+    /* reverse to c ... v, keeping only the points a straight piece needs */
+    double *out = malloc(2 * (size_t)n * sizeof *out);
+    if (!out) {
+        free(raw);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    int m = 0, i = n - 1;
+    out[2 * m] = raw[2 * i], out[2 * m + 1] = raw[2 * i + 1], m++;
+    while (i > 0) {
+        int j = i - 1;
+        while (j > 0 && !seg_leaves(ring, nring, &raw[2 * i], &raw[2 * (j - 1)],
+                                    j - 1 == 0 ? tol : 0.0))
+            j--;
+        out[2 * m] = raw[2 * j], out[2 * m + 1] = raw[2 * j + 1], m++;
+        i = j;
+    }
+    free(raw);
+    *path = out;
+    *np = m;
+    return SQ_OK;
+}
+
+/* The triangle holding p (the nearest centroid's when none does). */
+static int tri_holding(const cad_cdt_output *o, const double p[2])
+{
+    int best = 0;
+    double bd = HUGE_VAL;
+    for (int t = 0; t < o->ntris; t++) {
+        const double *a = &o->xy[2 * o->tri[3 * t]], *b = &o->xy[2 * o->tri[3 * t + 1]],
+                     *c = &o->xy[2 * o->tri[3 * t + 2]];
+        double d1 = (b[0] - a[0]) * (p[1] - a[1]) - (b[1] - a[1]) * (p[0] - a[0]);
+        double d2 = (c[0] - b[0]) * (p[1] - b[1]) - (c[1] - b[1]) * (p[0] - b[0]);
+        double d3 = (a[0] - c[0]) * (p[1] - c[1]) - (a[1] - c[1]) * (p[0] - c[0]);
+        if (d1 >= 0 && d2 >= 0 && d3 >= 0) return t;
+        double d = hypot((a[0] + b[0] + c[0]) / 3 - p[0], (a[1] + b[1] + c[1]) / 3 - p[1]);
+        if (d < bd) bd = d, best = t;
+    }
+    return best;
+}
+
+/* The centre of an n-quad split when the centroid will not do: among the
+ * triangles' circumcentres (Voronoi vertices of the ring's points, on its
+ * medial axis) inside the ring, else their centroids, the one that sees
+ * the most side points sp[n] along straight spokes, the farthest from the
+ * ring among those (the largest empty circle when it sees them all). */
+static void far_point(const cad_cdt_output *o, const double *ring, int nring, const double *sp,
+                      int n, double tol, double cen[2])
+{
+    double best = -1.0;
+    int bestseen = -1;
+    for (int t = 0; t < o->ntris; t++) {
+        const double *a = &o->xy[2 * o->tri[3 * t]], *b = &o->xy[2 * o->tri[3 * t + 1]],
+                     *c = &o->xy[2 * o->tri[3 * t + 2]];
+        double bx = b[0] - a[0], by = b[1] - a[1], cx = c[0] - a[0], cy = c[1] - a[1];
+        double d = 2.0 * (bx * cy - by * cx), q[2];
+        q[0] = a[0] + (cy * (bx * bx + by * by) - by * (cx * cx + cy * cy)) / d;
+        q[1] = a[1] + (bx * (cx * cx + cy * cy) - cx * (bx * bx + by * by)) / d;
+        if (!(fabs(d) > 0) || !lay_poly_contains(ring, nring, q)) {
+            q[0] = (a[0] + b[0] + c[0]) / 3.0;
+            q[1] = (a[1] + b[1] + c[1]) / 3.0;
+        }
+        /* straight spokes seen, and all of them when no two consecutive
+         * ones are within SQ_LAYOUT_CORNER_TOL_DEG of straight (else the
+         * centre is no corner of the quad between them) */
+        int seen = 0;
+        double ang[16];
+        for (int k = 0; k < n; k++) {
+            seen += !seg_leaves(ring, nring, q, &sp[2 * k], tol);
+            if (k < 16) ang[k] = atan2(sp[2 * k + 1] - q[1], sp[2 * k] - q[0]);
+        }
+        for (int k = 0; k < n && k < 16 && seen == n; k++) {
+            double gap = remainder(ang[(k + 1) % n] - ang[k], 2.0 * M_PI);
+            if (gap < 0) gap += 2.0 * M_PI;
+            if (gap > M_PI - SQ_LAYOUT_CORNER_TOL_DEG * M_PI / 180.0) seen = n - 1;
+        }
+        if (seen < bestseen) continue;
+        double dist = ring_dist(ring, nring, q);
+        if (seen > bestseen || dist > best) {
+            best = dist;
+            bestseen = seen;
+            cen[0] = q[0];
+            cen[1] = q[1];
+        }
+    }
+}
+
+/* n-quad split of patch p (one cycle, n corners; Marcon §3.4's midpoint
+ * division for n = 3): a node of valence n joined to the arc-length
+ * midpoints of the n sides, so that the patch becomes n quads.  The node
+ * is the area centroid when straight spokes from it stay inside the
+ * patch, else a point of the patch's medial axis (far_point); a spoke that
+ * cannot be straight follows the patch's constrained Delaunay
+ * triangulation (only if `bent`: else SQ_ERR_LAYOUT, as when the spokes
+ * would cross). */
+static sq_status split_centre(rctx *r, int p, int bent, sq_error *err)
+{
+    sq_layout *L = r->L;
+    const sq_layout_patch *P = &L->patches[p];
+    const int n = P->ncorners;
+    if (n < 2 || P->ncycles != 1) return SQ_FAIL(err, SQ_ERR_LAYOUT, "patch %d: no sides", p);
+    double *mid = malloc(2 * (size_t)n * sizeof *mid), *mfrac = malloc((size_t)n * sizeof *mfrac);
+    int *medge = malloc((size_t)n * sizeof *medge), *at = malloc((size_t)n * sizeof *at);
+    double **path = calloc((size_t)n, sizeof *path), *ring = NULL;
+    int *np = calloc((size_t)n, sizeof *np), *nb = NULL, nring = 0;
+    cad_cdt_output o = {0};
+    sq_status st = SQ_OK;
+    if (!mid || !mfrac || !medge || !at || !path || !np)
+        st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < n && st == SQ_OK; k++)
+        st = side_mid(r, P, k, &medge[k], &mfrac[k], &mid[2 * k], err);
+    if (st == SQ_OK) st = ring_with_points(L, P, mid, n, &ring, &nring, at, err);
+    double cen[2] = {0, 0};
+    int straight = st == SQ_OK && patch_centroid(L, P, cen) &&
+                   lay_poly_contains(ring, nring, cen);
+    for (int k = 0; k < n && straight; k++)
+        straight = !seg_leaves(ring, nring, cen, &mid[2 * k], r->tol);
+    if (st == SQ_OK && !straight && !bent)
+        st = SQ_FAIL(err, SQ_ERR_LAYOUT, "patch %d: straight spokes would leave it", p);
+    if (st == SQ_OK && !straight) {
+        int *seg = malloc(2 * (size_t)nring * sizeof *seg);
+        if (!seg) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        for (int i = 0; i < nring && st == SQ_OK; i++) seg[2 * i] = i, seg[2 * i + 1] = (i + 1) % nring;
+        cad_cdt_input in = {0};
+        in.npoints = nring, in.xy = ring, in.nsegments = nring, in.seg = seg;
+        /* refined so that the candidate centres cover the patch */
+        in.min_angle_deg = 20.0;
+        in.max_size = 0.1 * sqrt(P->area);
+        if (st == SQ_OK) st = cad_cdt_mesh(&in, &o, err);
+        free(seg);
+        if (st == SQ_OK && !(nb = tri_neighbours(&o)))
+            st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        if (st == SQ_OK) far_point(&o, ring, nring, mid, n, r->tol, cen);
+        int t0 = st == SQ_OK ? tri_holding(&o, cen) : 0;
+        for (int k = 0; k < n && st == SQ_OK; k++) {
+            if (!seg_leaves(ring, nring, cen, &mid[2 * k], r->tol)) continue;
+            int v = 0; /* the triangulation's vertex at side point k */
+            for (int i = 1; i < o.nverts; i++)
+                if (hypot(o.xy[2 * i] - mid[2 * k], o.xy[2 * i + 1] - mid[2 * k + 1]) <
+                    hypot(o.xy[2 * v] - mid[2 * k], o.xy[2 * v + 1] - mid[2 * k + 1]))
+                    v = i;
+            st = cdt_path(&o, nb, ring, nring, cen, t0, v, r->tol, &path[k], &np[k], err);
+            if (st == SQ_OK) { /* end exactly on the side point */
+                path[k][2 * np[k] - 2] = mid[2 * k];
+                path[k][2 * np[k] - 1] = mid[2 * k + 1];
+            }
+        }
+    }
+    /* spokes must not meet but at the centre */
+    for (int a = 0; a < n && st == SQ_OK; a++)
+        for (int b = a + 1; b < n && st == SQ_OK; b++) {
+            double sa[4] = {cen[0], cen[1], mid[2 * a], mid[2 * a + 1]};
+            double sb[4] = {cen[0], cen[1], mid[2 * b], mid[2 * b + 1]};
+            const double *pa = path[a] ? path[a] : sa, *pb = path[b] ? path[b] : sb;
+            if (paths_cross(pa, path[a] ? np[a] : 2, pb, path[b] ? np[b] : 2, r->tol))
+                st = SQ_FAIL(err, SQ_ERR_LAYOUT, "patch %d: spokes from (%g, %g) cross", p,
+                             cen[0], cen[1]);
+        }
+    if (st == SQ_OK) st = lay_sing_push(L, cen[0], cen[1], n, SQ_LROLE_MIDPOINT, err);
+    int M = L->nsing - 1;
+    for (int k = 0; k < n && st == SQ_OK; k++)
+        st = add_spoke(r, M, cen, path[k], np[k], medge[k], mfrac[k], &mid[2 * k], err);
+    /* a valence-0 face vertex of the patch now takes one quad */
+    for (int k = 0; k < n && st == SQ_OK; k++) {
+        const sq_layout_node *v = &L->nodes[P->corners[k]];
+        if (v->kind == SQ_LNODE_CORNER && L->vertex_quads[v->id] == 0) L->vertex_quads[v->id] = 1;
+    }
+    for (int k = 0; path && k < n; k++) free(path[k]);
+    free(path), free(np), free(mid), free(mfrac), free(medge), free(at), free(ring), free(nb);
+    cad_cdt_output_free(&o);
+    return st;
+}
+
+/* Triangular patch: midpoint division (Marcon §3.4, Fig. 13), the n-quad
+ * split with n = 3; a midpoint on a separatrix is a T-junction repaired
+ * next. */
 static sq_status split_triangle(rctx *r, int *done, sq_error *err)
 {
     sq_layout *L = r->L;
     for (int p = 0; p < L->npatches && !*done; p++) {
         const sq_layout_patch *P = &L->patches[p];
         if (P->ncorners != 3 || P->ncycles != 1) continue;
-        double mid[3][2], cen[2];
-        int medge[3];
-        double mfrac[3];
-        for (int k = 0; k < 3; k++) SQ_TRY(side_mid(r, P, k, &medge[k], &mfrac[k], mid[k], err));
-        if (!patch_centroid(L, P, cen)) {
-            cen[0] = (mid[0][0] + mid[1][0] + mid[2][0]) / 3.0;
-            cen[1] = (mid[0][1] + mid[1][1] + mid[2][1]) / 3.0;
-        }
-        SQ_TRY(lay_sing_push(L, cen[0], cen[1], 3, SQ_LROLE_MIDPOINT, err));
-        int M = L->nsing - 1;
-        for (int k = 0; k < 3; k++) SQ_TRY(add_spoke(r, M, cen, medge[k], mfrac[k], mid[k], err));
-        /* a valence-0 face vertex of the triangle now takes one quad */
-        for (int k = 0; k < 3; k++) {
-            const sq_layout_node *n = &L->nodes[P->corners[k]];
-            if (n->kind == SQ_LNODE_CORNER && L->vertex_quads[n->id] == 0)
-                L->vertex_quads[n->id] = 1;
+        sq_error e2;
+        sq_status st = split_centre(r, p, 0, &e2);
+        if (st == SQ_ERR_LAYOUT) continue; /* left to repair_polygon */
+        if (st != SQ_OK) {
+            if (err) *err = e2;
+            return st;
         }
         L->stats.triangles_repaired++;
         *done = 1;
@@ -757,7 +1160,7 @@ static sq_status split_valence2(rctx *r, int *done, sq_error *err)
         SQ_TRY(lay_sing_push(L, cen[0], cen[1], 3, SQ_LROLE_VALENCE2, err));
         int M = L->nsing - 1;
         SQ_TRY(straight_sep(L, M, cen, vxy, (sq_sep_end){SQ_END_CORNER, vid, 0.0}, err));
-        for (int j = 0; j < 2; j++) SQ_TRY(add_spoke(r, M, cen, medge[j], mfrac[j], mid[j], err));
+        for (int j = 0; j < 2; j++) SQ_TRY(add_spoke(r, M, cen, NULL, 0, medge[j], mfrac[j], mid[j], err));
         L->vertex_quads[vid] = 2;
         L->stats.valence2_split++;
         *done = 1;
@@ -831,6 +1234,250 @@ static sq_status cut_annulus(rctx *r, int *done, sq_error *err)
     return SQ_OK;
 }
 
+/* ---- polygons: an extra separatrix from a corner --------------------------- */
+
+/* Unit direction of half-edge h of patch P at its start. */
+static void half_start_dir(const sq_layout *L, const sq_layout_half *h, double d[2])
+{
+    const sq_layout_edge *E = &L->edges[h->edge];
+    sq_separatrix s = {.npts = E->npts, .xy = E->xy};
+    leave_dir(&s, h->reversed, d, L->scale);
+}
+
+/* The cross branches at corner k of patch P that point into the patch at
+ * least EXTRA_MARGIN_DEG away from both its sides there (dir[2 * j]);
+ * returns how many (at most 4). */
+#define EXTRA_MARGIN_DEG 20.0
+static int wedge_branches(const rctx *r, const sq_layout_patch *P, int k, double *dir)
+{
+    const sq_layout *L = r->L;
+    const sq_layout_node *c = &L->nodes[P->corners[k]];
+    double out[2], ang = P->corner_angle[k], margin = EXTRA_MARGIN_DEG * M_PI / 180.0;
+    half_start_dir(L, &P->half[P->corner_half[k]], out);
+    if (!r->field || ang < 2.0 * margin) return 0;
+    /* the field a little inside, along the bisector (the corner may be a
+     * singular point) */
+    double a0 = atan2(out[1], out[0]), bis = a0 + 0.5 * ang, th;
+    double q[2] = {c->x + 1e-3 * r->step * cos(bis), c->y + 1e-3 * r->step * sin(bis)};
+    int elem = -1, n = 0;
+    if (r->field->direction(r->field->ctx, q, &elem, &th)) return 0;
+    for (int j = 0; j < 4; j++) {
+        double phi = remainder(th + j * M_PI / 2 - a0, 2.0 * M_PI);
+        if (phi < 0) phi += 2.0 * M_PI;
+        if (phi > margin && phi < ang - margin) {
+            dir[2 * n] = cos(a0 + phi);
+            dir[2 * n + 1] = sin(a0 + phi);
+            n++;
+        }
+    }
+    return n;
+}
+
+/* An extra separatrix from corner k of patch p along direction dir, traced
+ * in the field to the patch's other side (Marcon's streamlines from the
+ * offending corner): a pentagon with a corner whose angle holds a cross
+ * branch becomes a quad and a triangle or two quads; where the line ends
+ * on a separatrix it leaves a T-junction, continued next.  The step is
+ * bounded by a tenth of the patch's shortest side so that thin patches
+ * are crossed, not jumped. */
+static sq_status extra_separatrix(rctx *r, int p, int k, const double dir[2], sq_error *err)
+{
+    sq_layout *L = r->L;
+    const sq_layout_patch *P = &L->patches[p];
+    const sq_layout_node *c = &L->nodes[P->corners[k]];
+    sq_sep_end start;
+    switch (c->kind) {
+    case SQ_LNODE_CORNER:
+        start = (sq_sep_end){SQ_END_CORNER, c->id, 0.0};
+        break;
+    case SQ_LNODE_FOOT:
+        start = (sq_sep_end){SQ_END_BOUNDARY, c->id, c->s};
+        break;
+    case SQ_LNODE_SINGULAR:
+        if (L->role[c->id] == SQ_LROLE_TJUNCTION)
+            return SQ_FAIL(err, SQ_ERR_LAYOUT, "corner is a T-junction");
+        start = (sq_sep_end){SQ_END_SINGULAR, c->id, 0.0};
+        break;
+    default:
+        return SQ_FAIL(err, SQ_ERR_LAYOUT, "corner is not a node of the set");
+    }
+    double shortest = HUGE_VAL;
+    for (int j = 0; j < P->ncorners; j++) {
+        int a = P->corner_half[j], b = P->corner_half[(j + 1) % P->ncorners];
+        if (b <= a) b += P->nhalf;
+        double len = 0.0;
+        for (int h = a; h < b; h++) len += L->edges[P->half[h % P->nhalf].edge].length;
+        shortest = fmin(shortest, len);
+    }
+    double step = r->step, xy[2] = {c->x, c->y};
+    r->step = fmin(step, 0.1 * shortest);
+    line ln;
+    sq_status st = trace_line(r, xy, dir, 1e-6 * L->scale, &ln, err);
+    r->step = step;
+    if (st == SQ_OK) st = add_line(r, &ln, start, err);
+    free(ln.xy);
+    if (st != SQ_OK) return st;
+    if (c->kind == SQ_LNODE_CORNER) L->vertex_quads[c->id]++;
+    if (c->kind == SQ_LNODE_SINGULAR) L->sing[c->id].valence++;
+    return SQ_OK;
+}
+
+/* ---- repairs tried and undone when they do not help --------------------- */
+
+typedef struct {
+    sq_separatrix_set seps;
+    int nsing;
+    sq_singularity *sing;
+    sq_lrole *role;
+    int *vertex_quads;
+    sq_layout_stats stats;
+} snapshot;
+
+static void snapshot_free(snapshot *s)
+{
+    lay_sepset_free(&s->seps);
+    free(s->sing), free(s->role), free(s->vertex_quads);
+    memset(s, 0, sizeof *s);
+}
+
+static sq_status snapshot_take(const sq_layout *L, snapshot *s, sq_error *err)
+{
+    memset(s, 0, sizeof *s);
+    size_t ns = (size_t)(L->nsing > 0 ? L->nsing : 1), nv = (size_t)(L->nvertices > 0 ? L->nvertices : 1);
+    s->sing = malloc(ns * sizeof *s->sing);
+    s->role = malloc(ns * sizeof *s->role);
+    s->vertex_quads = malloc(nv * sizeof *s->vertex_quads);
+    if (!s->sing || !s->role || !s->vertex_quads) {
+        snapshot_free(s);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    memcpy(s->sing, L->sing, (size_t)L->nsing * sizeof *s->sing);
+    memcpy(s->role, L->role, (size_t)L->nsing * sizeof *s->role);
+    memcpy(s->vertex_quads, L->vertex_quads, (size_t)L->nvertices * sizeof *s->vertex_quads);
+    s->nsing = L->nsing;
+    s->stats = L->stats;
+    for (int k = 0; k < L->seps.n; k++) {
+        const sq_separatrix *a = &L->seps.s[k];
+        sq_status st = lay_sep_push(&s->seps, a->xy, a->npts, a->start, a->end, err);
+        if (st != SQ_OK) {
+            snapshot_free(s);
+            return st;
+        }
+        sq_separatrix *b = &s->seps.s[k];
+        b->start_angle = a->start_angle;
+        b->end_angle = a->end_angle;
+        b->merged = a->merged;
+    }
+    return SQ_OK;
+}
+
+/* Put the snapshot back into L (whose own state is freed); s is emptied. */
+static void snapshot_restore(sq_layout *L, snapshot *s)
+{
+    lay_sepset_free(&L->seps);
+    free(L->sing), free(L->role), free(L->vertex_quads);
+    L->seps = s->seps;
+    L->sing = s->sing;
+    L->role = s->role;
+    L->nsing = s->nsing;
+    L->vertex_quads = s->vertex_quads;
+    L->stats = s->stats;
+    memset(s, 0, sizeof *s);
+}
+
+/* One set-level repair, the first that applies (*done). */
+static sq_status set_repair(rctx *r, int *done, sq_error *err)
+{
+    *done = 0;
+    r->hit_ok = 0;
+    SQ_TRY(remove_duplicate(r, done, err));
+    if (!*done) SQ_TRY(make_tjunction(r, done, err));
+    if (!*done) SQ_TRY(cut_limit_cycle(r, done, err));
+    if (!*done) SQ_TRY(split_crossing(r, done, err));
+    if (!*done) SQ_TRY(repair_tjunction(r, done, err));
+    return SQ_OK;
+}
+
+/* After a patch repair: the set-level repairs until none applies, the
+ * graph rebuilt and its defects counted (*ndef; INT_MAX when the repairs
+ * do not settle within SETTLE_MAX). */
+#define SETTLE_MAX 200
+static sq_status settle(rctx *r, int *ndef, sq_error *err)
+{
+    int done = 1, it = 0;
+    *ndef = INT_MAX;
+    while (done && it++ < SETTLE_MAX) SQ_TRY(set_repair(r, &done, err));
+    if (done) return SQ_OK;
+    SQ_TRY(lay_graph_build(r->L, r->face, r->info, err));
+    sq_layout_defects d;
+    *ndef = sq_layout_check(r->L, &d);
+    sq_layout_defects_free(&d);
+    return SQ_OK;
+}
+
+/* Each trial settles the whole set: a bound on them bounds the time a face
+ * with many non-quad patches takes to be declared invalid. */
+#define MAX_TRIALS 64
+
+typedef struct {
+    int patch, corner; /* corner < 0: the n-quad split */
+    double dir[2];
+} candidate;
+
+/* Apply candidate c and settle; keep it (*kept) when fewer than `before`
+ * defects are left, else restore the set and its graph. */
+static sq_status try_candidate(rctx *r, const candidate *c, int before, int *kept, sq_error *err)
+{
+    *kept = 0;
+    if (r->trials++ >= MAX_TRIALS) return SQ_OK;
+    snapshot s;
+    SQ_TRY(snapshot_take(r->L, &s, err));
+    sq_error e2;
+    int ndef = INT_MAX;
+    sq_status st = c->corner >= 0 ? extra_separatrix(r, c->patch, c->corner, c->dir, &e2)
+                                  : split_centre(r, c->patch, 1, &e2);
+    if (st == SQ_OK) st = settle(r, &ndef, &e2);
+    if (st == SQ_ERR_INTERNAL) {
+        snapshot_free(&s);
+        if (err) *err = e2;
+        return st;
+    }
+    *kept = st == SQ_OK && ndef < before;
+    if (*kept) {
+        snapshot_free(&s);
+        return SQ_OK;
+    }
+    snapshot_restore(r->L, &s);
+    r->hit_ok = 0;
+    return lay_graph_build(r->L, r->face, r->info, err);
+}
+
+/* A patch with n != 4 corners that the triangle repairs leave (a pentagon,
+ * a hexagon, a triangle they could not mend): first an extra separatrix
+ * from a corner whose angle holds a cross branch, else the n-quad split;
+ * the first that leaves fewer defects than `before` is kept. */
+static sq_status repair_polygon(rctx *r, int before, int *done, sq_error *err)
+{
+    sq_layout *L = r->L;
+    for (int p = 0; p < L->npatches && !*done; p++) {
+        if (L->patches[p].ncycles != 1 || L->patches[p].ncorners == 4) continue;
+        for (int k = 0; k < L->patches[p].ncorners && !*done; k++) {
+            double dir[8];
+            int nd = wedge_branches(r, &L->patches[p], k, dir);
+            for (int j = 0; j < nd && !*done; j++) {
+                candidate c = {p, k, {dir[2 * j], dir[2 * j + 1]}};
+                SQ_TRY(try_candidate(r, &c, before, done, err));
+                if (*done) L->stats.extra_separatrices++;
+            }
+        }
+        if (*done || L->patches[p].ncorners < 2) continue;
+        candidate c = {p, -1, {0.0, 0.0}};
+        SQ_TRY(try_candidate(r, &c, before, done, err));
+        if (*done) L->stats.polygons_split++;
+    }
+    return SQ_OK;
+}
+
 /* ---- the correction loop ------------------------------------------------ */
 
 sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const int *vertex_quads,
@@ -859,12 +1506,7 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
         /* set-level repairs first, the graph rebuilt after them; each
          * iteration follows a change of the set */
         int done = 0;
-        r.hit_ok = 0;
-        st = remove_duplicate(&r, &done, err);
-        if (st == SQ_OK && !done) st = make_tjunction(&r, &done, err);
-        if (st == SQ_OK && !done) st = cut_limit_cycle(&r, &done, err);
-        if (st == SQ_OK && !done) st = split_crossing(&r, &done, err);
-        if (st == SQ_OK && !done) st = repair_tjunction(&r, &done, err);
+        st = set_repair(&r, &done, err);
         if (st != SQ_OK) break;
         if (done) continue;
         st = lay_graph_build(L, face, info, err);
@@ -874,6 +1516,7 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
         st = cut_annulus(&r, &done, err);
         if (st == SQ_OK && !done) st = split_valence2(&r, &done, err);
         if (st == SQ_OK && !done) st = split_triangle(&r, &done, err);
+        if (st == SQ_OK && !done) st = repair_polygon(&r, d.n, &done, err);
         if (st == SQ_OK && !done) break; /* stuck */
     }
     L->stats.iterations = it;

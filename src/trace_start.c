@@ -116,6 +116,53 @@ static sq_status scan_roots(const sq_cross_field *field, const double p0[2], dou
     return SQ_OK;
 }
 
+/* The V start directions at a singular point by Algorithm 1 at radius c
+ * (guesses 2π/V apart from the first); 0 if an iteration fails. */
+static int singular_iterate(const sq_tracer *tr, const double p0[2], int V, double c,
+                            double *alpha)
+{
+    const double gain = V > 0 ? 4.0 / V : 1.0;
+    sq_error e2;
+    if (sq_trace_start_direction(tr->field, p0, c, 0.0, gain, tr->opt.tol, &alpha[0], &e2))
+        return 0;
+    for (int k = 1; k < V; k++)
+        if (sq_trace_start_direction(tr->field, p0, c, alpha[0] + 2.0 * M_PI * k / V, gain,
+                                     tr->opt.tol, &alpha[k], &e2))
+            return 0;
+    return 1;
+}
+
+/* Fallback: the rays around the point along which the mismatch falls
+ * through zero (near a valence-V point it falls by V/4 per radian, V times
+ * around), the V most nearly 2π/V apart from the first. */
+static sq_status singular_scan(const sq_tracer *tr, int j, const double p0[2], int V, double c,
+                               double *alpha, sq_error *err)
+{
+    double roots[64];
+    int nr;
+    SQ_TRY(scan_roots(tr->field, p0, c, 0.0, 2.0 * M_PI, 64 * V, tr->opt.tol, roots, 64, &nr,
+                      err));
+    if (nr > 64) nr = 64;
+    if (nr < V)
+        return SQ_FAIL(err, SQ_ERR_INTERNAL,
+                       "singular point %d (valence %d) at (%.9g, %.9g): Algorithm 1 does not "
+                       "converge and the field has %d separatrix directions around it",
+                       j, V, p0[0], p0[1], nr);
+    alpha[0] = roots[0];
+    roots[0] = NAN;
+    for (int k = 1; k < V; k++) {
+        int best = -1;
+        double bd = HUGE_VAL;
+        for (int r = 0; r < nr; r++) {
+            double d = angdist(roots[r], alpha[0] + 2.0 * M_PI * k / V);
+            if (roots[r] == roots[r] && d < bd) bd = d, best = r;
+        }
+        alpha[k] = roots[best];
+        roots[best] = NAN;
+    }
+    return SQ_OK;
+}
+
 sq_status sq_trace_singular_starts(const sq_tracer *tr, int j, double *alpha, double *h0,
                                    sq_error *err)
 {
@@ -135,11 +182,14 @@ sq_status sq_trace_singular_starts(const sq_tracer *tr, int j, double *alpha, do
     SQ_TRY(sq_face_boundary_distance(tr->face, p0, &dist, err));
     if (c > 0.5 * dist) c = 0.5 * dist;
     *h0 = c;
-    const double gain = V > 0 ? 4.0 / V : 1.0;
-    SQ_TRY(sq_trace_start_direction(tr->field, p0, c, 0.0, gain, tr->opt.tol, &alpha[0], err));
-    for (int k = 1; k < V; k++)
-        SQ_TRY(sq_trace_start_direction(tr->field, p0, c, alpha[0] + 2.0 * M_PI * k / V, gain,
-                                        tr->opt.tol, &alpha[k], err));
+    /* Algorithm 1 at c, then at c/2 and c/4 (another singular point or a
+     * curved boundary within c bends the field off linear in the angle,
+     * where the iteration may not contract), then the root scan around
+     * the point */
+    int ok = 0;
+    for (int pass = 0; pass < 3 && !ok; pass++, c *= 0.5)
+        ok = singular_iterate(tr, p0, V, c, alpha);
+    if (!ok) SQ_TRY(singular_scan(tr, j, p0, V, 4.0 * c, alpha, err));
     for (int k = 0; k < V; k++) {
         alpha[k] = mod2pi(alpha[k]);
         for (int q = 0; q < k; q++)
