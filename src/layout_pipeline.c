@@ -236,14 +236,38 @@ done:
     return st;
 }
 
+/* The guiding field's analysis.  Points that break Poincaré–Hopf mean
+ * the search missed or misread one (a valence-3/valence-5 pair closer than
+ * the order resolves: the mesh's order 4 can merge it into one zero): the
+ * field is solved again at the default order before its points are used. */
+static sq_status analyse(const cad_face *face, const sq_field_options *fo, sq_field_analysis *a,
+                         sq_error *err)
+{
+    SQ_TRY(sq_field_analyse(face, fo, a, err));
+    sq_field_options def;
+    sq_field_options_default(&def);
+    if (a->ph_lhs == a->ph_rhs || fo->order >= def.order) return SQ_OK;
+    sq_field_options finer = *fo;
+    finer.order = def.order;
+    finer.tri.order = def.tri.order;
+    sq_field_analysis b = {0};
+    sq_status st = sq_field_analyse(face, &finer, &b, err);
+    if (st != SQ_OK || b.ph_lhs != b.ph_rhs) {
+        sq_field_analysis_free(&b);
+        return SQ_OK; /* no better: the coarse points, as before */
+    }
+    sq_field_analysis_free(a);
+    *a = b;
+    return SQ_OK;
+}
+
 sq_status sq_layout_run(const cad_face *face, const sq_layout_options *opt, sq_layout_result *out,
                         sq_error *err)
 {
     memset(out, 0, sizeof *out);
     sq_status st = SQ_OK;
     const int natural = opt->singularities && !strcmp(opt->singularities, "natural");
-    if (!opt->singularities || natural)
-        st = sq_field_analyse(face, &opt->field, &out->analysis, err);
+    if (!opt->singularities || natural) st = analyse(face, &opt->field, &out->analysis, err);
     sq_pattern pat = {0};
     if (st == SQ_OK && !opt->singularities) {
         st = two_step(face, opt, out, err);
