@@ -196,7 +196,7 @@ static sq_status trace_line(rctx *r, const double p0[2], const double d0[2], dou
     const sq_separatrix_set *S = &r->L->seps;
     /* the steps a line of maxlen takes at the default step, four times
      * over: small steps in thin patches may not run it out of time */
-    const double budget = 4.0 * r->maxlen / r->step;
+    const double budget = r->maxlen / r->step;
     for (long nstep = 0; len < r->maxlen && nstep < budget; nstep++) {
         /* a line that runs between separatrices closer than the step (a
          * thin patch along the boundary) steps at half its clearance, so
@@ -1032,9 +1032,6 @@ static sq_status split_centre(rctx *r, int p, int bent, sq_error *err)
         for (int i = 0; i < nring && st == SQ_OK; i++) seg[2 * i] = i, seg[2 * i + 1] = (i + 1) % nring;
         cad_cdt_input in = {0};
         in.npoints = nring, in.xy = ring, in.nsegments = nring, in.seg = seg;
-        /* refined so that the candidate centres cover the patch */
-        in.min_angle_deg = 20.0;
-        in.max_size = 0.1 * sqrt(P->area);
         if (st == SQ_OK) st = cad_cdt_mesh(&in, &o, err);
         free(seg);
         if (st == SQ_OK && !(nb = tri_neighbours(&o)))
@@ -1417,7 +1414,7 @@ static sq_status settle(rctx *r, int *ndef, sq_error *err)
 
 /* Each trial settles the whole set: a bound on them bounds the time a face
  * with many non-quad patches takes to be declared invalid. */
-#define MAX_TRIALS 64
+#define MAX_TRIALS 16
 
 typedef struct {
     int patch, corner; /* corner < 0: the n-quad split */
