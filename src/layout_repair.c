@@ -994,6 +994,10 @@ static void far_point(const cad_cdt_output *o, const double *ring, int nring, co
     }
 }
 
+/* the n-quad split's triangulation: at most this many points per point of
+ * the patch's ring (its own points and CGAL's splits of encroached sides) */
+#define SPLIT_CDT_POINTS_PER_RING_POINT 8
+
 /* n-quad split of patch p (one cycle, n corners; Marcon §3.4's midpoint
  * division for n = 3): a node of valence n joined to the arc-length
  * midpoints of the n sides, so that the patch becomes n quads.  The node
@@ -1032,6 +1036,11 @@ static sq_status split_centre(rctx *r, int p, int bent, sq_error *err)
         for (int i = 0; i < nring && st == SQ_OK; i++) seg[2 * i] = i, seg[2 * i + 1] = (i + 1) % nring;
         cad_cdt_input in = {0};
         in.npoints = nring, in.xy = ring, in.nsegments = nring, in.seg = seg;
+        /* spokes need a triangulation, not a fine one: CGAL's conforming
+         * splits of encroached sides multiply without end near tiny sides,
+         * so a split that needs more than a few points per ring point is
+         * given up (the trial is undone) */
+        in.max_vertices = SPLIT_CDT_POINTS_PER_RING_POINT * nring;
         if (st == SQ_OK) st = cad_cdt_mesh(&in, &o, err);
         free(seg);
         if (st == SQ_OK && !(nb = tri_neighbours(&o)))
