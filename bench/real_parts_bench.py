@@ -50,7 +50,9 @@ def list_faces(semquad, path, timeout):
         return [], 0, "", "exit %d: %s" % (p.returncode, err[-1] if err else "")
     d = json.loads(p.stdout)
     faces = d["faces"]
-    return [(f["index"], f["area"]) for f in faces if f["surface"] == "plane"], len(faces), d.get("unit", ""), ""
+    # a broken face (info's status "broken: ...") has no area: it is listed all the same
+    return ([(f["index"], f.get("area", 0.0)) for f in faces if f["surface"] == "plane"],
+            len(faces), d.get("unit", ""), "")
 
 
 def spread(items, k):
