@@ -1357,9 +1357,12 @@ static sq_status snapshot_take(const sq_layout *L, snapshot *s, sq_error *err)
         snapshot_free(s);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
-    memcpy(s->sing, L->sing, (size_t)L->nsing * sizeof *s->sing);
-    memcpy(s->role, L->role, (size_t)L->nsing * sizeof *s->role);
-    memcpy(s->vertex_quads, L->vertex_quads, (size_t)L->nvertices * sizeof *s->vertex_quads);
+    if (L->nsing > 0) { /* a layout without singular points has no arrays */
+        memcpy(s->sing, L->sing, (size_t)L->nsing * sizeof *s->sing);
+        memcpy(s->role, L->role, (size_t)L->nsing * sizeof *s->role);
+    }
+    if (L->nvertices > 0)
+        memcpy(s->vertex_quads, L->vertex_quads, (size_t)L->nvertices * sizeof *s->vertex_quads);
     s->nsing = L->nsing;
     s->stats = L->stats;
     for (int k = 0; k < L->seps.n; k++) {
