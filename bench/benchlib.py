@@ -50,7 +50,9 @@ def report_figures(path):
     lay = d.get("layout", {})
     out = {"quads": m.get("quads"), "irregular": m.get("irregular_interior_vertices"),
            "min_sj": m.get("min_scaled_jacobian"), "inverted": m.get("inverted"),
-           "field": d.get("field", {}).get("kind")}
+           "field": d.get("field", {}).get("kind"), "road": d.get("road", "layout")}
+    if d.get("road_reason"):
+        out["road_reason"] = d["road_reason"]
     # the key's place in the report is not settled: the layout's, the mesh's or the top level
     gb = next((o["gauss_bonnet_min"] for o in (lay, m, d) if "gauss_bonnet_min" in o), None)
     if gb is not None:
@@ -73,20 +75,41 @@ def outcome(r):
 _NUMS = re.compile(r"[-+]?\d[\d.]*(?:e[-+]?\d+)?", re.I)
 
 
-def failure_class(r):
-    """Exit status and the message with its numbers and file names blanked, so faces
-    failing in the same place group together."""
-    if r["exit"] is None:
-        return "timeout"
-    if r["exit"] < 0:
-        return "signal %s" % signal.Signals(-r["exit"]).name
-    msg = r["stderr"]
+def blank(msg):
+    """A message with its numbers, file names and parentheses blanked, so faces failing
+    in the same place group together."""
     msg = re.sub(r"^semquad:\s*", "", msg)
     msg = re.sub(r"\S+\.(step|stp|brep|igs|iges|json|msh)\b:?", "FILE", msg)
     msg = re.sub(r"\([^()]*\)", "(…)", msg)
     msg = _NUMS.sub("N", msg)
-    words = msg.split()
-    return "exit %d: %s" % (r["exit"], " ".join(words[:9]))
+    return " ".join(msg.split()[:9])
+
+
+def failure_class(r):
+    """Exit status and the first words of the message, blanked."""
+    if r["exit"] is None:
+        return "timeout"
+    if r["exit"] < 0:
+        return "signal %s" % signal.Signals(-r["exit"]).name
+    return "exit %d: %s" % (r["exit"], blank(r["stderr"]))
+
+
+def road_lines(ok, name_of, examples=3):
+    """Markdown: the meshed faces by road, and why the layout road gave way to the
+    split road (quad_split.h) where it did."""
+    split = [r for r in ok if r.get("road") == "split"]
+    out = ["Meshed by the layout road: %d; by the split road (the fallback: a triangulation "
+           "split into quads, many irregular vertices): %d." % (len(ok) - len(split), len(split))]
+    if split:
+        groups = {}
+        for r in split:
+            groups.setdefault(blank(r.get("road_reason", "")), []).append(r)
+        out += ["", "Why the layout road gave way:", "", "| layout road's failure | faces | examples |",
+                "|---|---|---|"]
+        for c, rs in sorted(groups.items(), key=lambda kv: (-len(kv[1]), kv[0])):
+            ex = ", ".join("`%s`" % name_of(r) for r in rs[:examples])
+            out.append("| %s | %d | %s |" % (c.replace("|", "/"), len(rs), ex))
+    return out
 
 
 def percentile(xs, q):

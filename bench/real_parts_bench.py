@@ -234,6 +234,7 @@ def markdown(file_rows, rows, args):
         rs = [r for r in rows if r["file"] == fr["file"]]
         lines.append("| %s | %d | %d | %d | %d |" % (fr["file"], fr["faces"], fr["planar"], len(rs),
                                                     sum(1 for r in rs if r["outcome"] == "ok")))
+    lines += [""] + benchlib.road_lines(ok, lambda r: "%s --face %d" % (r["file"], r["face"]))
     lines += ["", "Failure classes (exit status and the first words of the message, numbers blanked):", ""]
     lines += benchlib.failure_table(rows, lambda r: "%s --face %d" % (r["file"], r["face"]))
     lines += ["", "Wall time per face, seconds (every face; meshed faces only):", "",

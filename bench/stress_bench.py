@@ -95,6 +95,8 @@ def markdown(rows, corpus, semquad, timeout, classes_order):
         lines.append("| %s | %d | %d | %.0f | %s |" % (c, len(rs), k, 100.0 * k / len(rs),
                                                        ", ".join("%s×%d" % kv for kv in sorted(codes.items())) or "—"))
     lines.append("")
+    lines += benchlib.road_lines(ok, lambda r: r["file"])
+    lines.append("")
     lines.append("Failure classes (exit status and the first words of the message, numbers blanked):")
     lines.append("")
     lines += benchlib.failure_table(rows, lambda r: r["file"])
@@ -106,11 +108,13 @@ def markdown(rows, corpus, semquad, timeout, classes_order):
     lines.append(benchlib.time_row(rows))
     lines.append(benchlib.time_row(ok))
     lines.append("")
-    ok = [r for r in ok if r["exit"] == 0]
+    # the excess is the layout road's: the split road's irregular vertices are its price
+    ok = [r for r in ok if r["exit"] == 0 and r.get("road", "layout") == "layout"]
     ex = [r["excess"] for r in ok if "excess" in r]
     irr = [r["irregular"] for r in ok if r.get("irregular") is not None]
     if ex:
-        lines.append("Interior irregular vertices over `gauss_bonnet_min`, meshed faces (%d with the key):" % len(ex))
+        lines.append("Interior irregular vertices over `gauss_bonnet_min`, faces meshed by the layout road "
+                     "(%d with the key):" % len(ex))
         lines.append("")
         lines.append("| excess | 0 | 1-2 | 3-4 | 5-8 | > 8 | mean | max |")
         lines.append("|---|---|---|---|---|---|---|---|")

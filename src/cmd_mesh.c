@@ -1,9 +1,10 @@
 /* semquad mesh FILE [--face N] [--order Q] [--size h] [--field-order P]
  *   [--method auto|cg|dg] [--merge-distance K] [--nodes gll|equispaced]
  *   [--bl E1,E2,... --bl-first d --bl-ratio r --bl-layers n] [--max-quads N]
- *   [-o out.msh|.xml|.vtu] [--svg F] [--report F] [-q] */
+ *   [--road auto|layout|split] [-o out.msh|.xml|.vtu] [--svg F] [--report F] [-q] */
 #include "cli.h"
 #include "quad_mesher.h"
+#include "quad_split.h"
 #include "write_mesh_report.h"
 #include "write_msh.h"
 #include "write_nektar.h"
@@ -38,10 +39,130 @@ static void progress(int quiet, const char *fmt, const char *a, double t)
     }
 }
 
+typedef enum { ROAD_AUTO = 0, ROAD_LAYOUT, ROAD_SPLIT } road_kind;
+
+/* Falls back on the split road (quad_split.h): what the layout road could
+ * not do on a face the split road may mesh; not a usage, input or output
+ * error, not a pattern the user imposed, not boundary layers (which need
+ * the layout's chords). */
+static int takes_split_road(sq_status st, const sq_layout_options *lo, const sq_mesher_options *mo)
+{
+    return (st == SQ_ERR_LAYOUT || st == SQ_ERR_INTERNAL || st == SQ_ERR_GEOMETRY ||
+            st == SQ_ERR_PATTERN) &&
+           !lo->singularities && mo->nbl == 0;
+}
+
+static void layout_progress(const sq_layout_result *r, const sq_mesh_timings *t)
+{
+    fprintf(stderr, "semquad: %s field %s P=%d on %d triangles (%.3f s)\n", r->field.kind,
+            r->field.method == SEM_CG ? "CG" : "DG", r->field.order, r->field.triangles,
+            t->triangulate + t->solve);
+    fprintf(stderr, "semquad: %d singular points, %d separatrices, %d quad patches (%.3f s)\n",
+            r->nsing, r->layout.stats.separatrices, r->layout.stats.quad_patches,
+            t->critical_points + t->trace + t->layout);
+}
+
+/* Mesh by `mesh(ctx, &m)` at mo's size; without --size the default,
+ * sqrt(area)/8, can be too coarse for a small curved feature (an aerofoil
+ * in a large box: its curved quads fold): halve it, a few times, rather
+ * than fail. */
+typedef sq_status (*mesh_fn)(void *ctx, const sq_mesher_options *mo, sq_quad_mesh **m, sq_error *err);
+
+static sq_status mesh_halving(mesh_fn mesh, void *ctx, sq_mesher_options mo, double default_size,
+                              int size_given, int quiet, sq_quad_mesh **m, sq_quad_quality *q,
+                              sq_error *err)
+{
+    sq_status st = SQ_OK;
+    for (int k = 0;; k++) {
+        if (k > 0) {
+            mo.size = default_size / (double)(1 << k);
+            if (!quiet)
+                fprintf(stderr, "semquad: note: %d quads fold at size %.4g; trying %.4g\n",
+                        q->inverted, 2.0 * mo.size, mo.size);
+            sq_quad_mesh_free(m);
+        }
+        st = mesh(ctx, &mo, m, err);
+        if (st == SQ_OK) st = sq_quad_mesh_quality(*m, NULL, NULL, q, err);
+        if (size_given || st != SQ_OK || q->inverted == 0 || k == DEFAULT_SIZE_HALVINGS) break;
+    }
+    if (st == SQ_OK && q->inverted > 0)
+        st = SQ_FAIL(err, SQ_ERR_LAYOUT,
+                     "%d quads have a non-positive Jacobian (min scaled Jacobian %.3g); try a "
+                     "smaller --size",
+                     q->inverted, q->min_scaled_jacobian);
+    if (st != SQ_OK) sq_quad_mesh_free(m);
+    return st;
+}
+
+typedef struct {
+    const cad_face *face;
+    const sq_layout_result *r;
+} layout_ctx;
+
+static sq_status mesh_by_layout(void *ctx, const sq_mesher_options *mo, sq_quad_mesh **m,
+                                sq_error *err)
+{
+    const layout_ctx *c = ctx;
+    return sq_mesh_layout(c->face, c->r->info, &c->r->layout, mo, m, err);
+}
+
+typedef struct {
+    const cad_face *face;
+    const sq_face_info *info;
+} split_ctx;
+
+static sq_status mesh_by_split(void *ctx, const sq_mesher_options *mo, sq_quad_mesh **m,
+                               sq_error *err)
+{
+    const split_ctx *c = ctx;
+    return sq_mesh_split(c->face, c->info, mo, m, err);
+}
+
+/* The layout road: field, layout (sq_layout_run), quads (sq_mesh_layout). */
+static sq_status layout_road(const cad_face *f, const sq_layout_options *lo, sq_mesher_options *mo,
+                             int size_given, int quiet, sq_layout_result *r, sq_quad_mesh **m,
+                             sq_quad_quality *q, sq_mesh_timings *t, sq_error *err)
+{
+    sq_status st = sq_layout_run(f, lo, r, err);
+    char split[512];
+    if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && !quiet && sq_layout_note(r, split, sizeof split))
+        fprintf(stderr, "semquad: note: %s\n", split);
+    if (st != SQ_OK) return st;
+    t->triangulate = r->field.t_triangulate;
+    t->solve = r->field.t_solve;
+    t->critical_points = r->field.t_critical;
+    t->trace = r->t_trace;
+    t->layout = r->t_layout;
+    if (!quiet) layout_progress(r, t);
+    double t1 = sq_now();
+    /* sizes from e^H where the H/θ field was traced */
+    sq_cross_field cf;
+    if (!strcmp(r->field.kind, "H-theta")) {
+        cf = sq_htheta_cross_field(&r->htheta);
+        mo->field = &cf;
+    }
+    layout_ctx c = {f, r};
+    st = mesh_halving(mesh_by_layout, &c, *mo, sq_mesher_default_size(&r->layout), size_given, quiet,
+                      m, q, err);
+    mo->field = NULL;
+    t->mesh = sq_now() - t1;
+    return st;
+}
+
+static sq_status split_road(const cad_face *f, const sq_face_info *fi, const sq_mesher_options *mo,
+                            int size_given, int quiet, sq_quad_mesh **m, sq_quad_quality *q,
+                            sq_error *err)
+{
+    split_ctx c = {f, fi};
+    return mesh_halving(mesh_by_split, &c, *mo, sq_split_default_size(fi), size_given, quiet, m, q,
+                        err);
+}
+
 sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
 {
     const char *val;
     int bl[64], size_given = 0;
+    road_kind road_choice = ROAD_AUTO;
     sq_layout_options lo;
     sq_layout_options_for_mesh(&lo);
     sq_mesher_options mo;
@@ -91,6 +212,14 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
         } else if (!strcmp(a, "--max-quads")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             SQ_TRY(sq_cli_double(a, val, 1.0, 1e15, &mo.max_quads, err));
+        } else if (!strcmp(a, "--road")) {
+            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
+            if (!strcmp(val, "auto")) road_choice = ROAD_AUTO;
+            else if (!strcmp(val, "layout")) road_choice = ROAD_LAYOUT;
+            else if (!strcmp(val, "split")) road_choice = ROAD_SPLIT;
+            else
+                return SQ_FAIL(err, SQ_ERR_USAGE, "--road expects auto, layout or split, got '%s'",
+                               val);
         } else if (!strcmp(a, "--nodes")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
             if (!strcmp(val, "gll"))
@@ -125,69 +254,36 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
     char healed[1024];
     if (!args.quiet && sq_cli_heal_note(model, args.face, healed, sizeof healed))
         fprintf(stderr, "semquad: %s\n", healed);
-    /* a --size that would exhaust memory is refused before any work */
-    sq_status st = SQ_OK;
-    if (size_given) {
-        sq_face_info fi;
-        st = sq_face_info_compute(f, &fi, err);
-        if (st == SQ_OK) st = sq_mesher_check_size(fi.area, mo.size, mo.max_quads, err);
-        sq_face_info_free(&fi);
-    }
     progress(args.quiet, "semquad: read %s", args.input, t.read);
+    sq_face_info fi;
+    sq_status st = sq_face_info_compute(f, &fi, err);
+    /* a --size that would exhaust memory is refused before any work */
+    if (st == SQ_OK && size_given) st = sq_mesher_check_size(fi.area, mo.size, mo.max_quads, err);
     sq_layout_result r;
     memset(&r, 0, sizeof r);
-    if (st == SQ_OK) st = sq_layout_run(f, &lo, &r, err);
-    char split[512];
-    if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && !args.quiet &&
-        sq_layout_note(&r, split, sizeof split))
-        fprintf(stderr, "semquad: note: %s\n", split);
-    if (st == SQ_OK) {
-        t.triangulate = r.field.t_triangulate;
-        t.solve = r.field.t_solve;
-        t.critical_points = r.field.t_critical;
-        t.trace = r.t_trace;
-        t.layout = r.t_layout;
-        if (!args.quiet) {
-            fprintf(stderr, "semquad: %s field %s P=%d on %d triangles (%.3f s)\n", r.field.kind,
-                    r.field.method == SEM_CG ? "CG" : "DG", r.field.order, r.field.triangles,
-                    t.triangulate + t.solve);
-            fprintf(stderr,
-                    "semquad: %d singular points, %d separatrices, %d quad patches (%.3f s)\n",
-                    r.nsing, r.layout.stats.separatrices, r.layout.stats.quad_patches,
-                    t.critical_points + t.trace + t.layout);
-        }
-    }
     sq_quad_mesh *m = NULL;
     sq_quad_quality q;
-    if (st == SQ_OK) {
+    sq_mesh_road road = {road_choice == ROAD_SPLIT ? "split" : "layout", ""};
+    if (st == SQ_OK && road_choice != ROAD_SPLIT)
+        st = layout_road(f, &lo, &mo, size_given, args.quiet, &r, &m, &q, &t, err);
+    if (road_choice == ROAD_AUTO && takes_split_road(st, &lo, &mo)) {
+        snprintf(road.reason, sizeof road.reason, "%s", err->msg);
+        if (!args.quiet)
+            fprintf(stderr, "semquad: note: the layout road failed (%s); meshing by the split road\n",
+                    err->msg);
+        road.name = "split";
+        sq_quad_mesh_free(&m);
+        st = SQ_OK;
+    }
+    if (st == SQ_OK && !strcmp(road.name, "split")) {
         double t1 = sq_now();
-        /* sizes from e^H where the H/θ field was traced */
-        sq_cross_field cf;
-        if (!strcmp(r.field.kind, "H-theta")) {
-            cf = sq_htheta_cross_field(&r.htheta);
-            mo.field = &cf;
-        }
-        /* Without --size the default, sqrt(area)/8, can be too coarse for a
-         * small curved feature (an aerofoil in a large box: its curved quads
-         * fold): halve it, a few times, rather than fail. */
-        for (int k = 0;; k++) {
-            if (k > 0) {
-                mo.size = sq_mesher_default_size(&r.layout) / (double)(1 << k);
-                if (!args.quiet)
-                    fprintf(stderr, "semquad: note: %d quads fold at size %.4g; trying %.4g\n",
-                            q.inverted, 2.0 * mo.size, mo.size);
-                sq_quad_mesh_free(&m);
-            }
-            st = sq_mesh_layout(f, r.info, &r.layout, &mo, &m, err);
-            if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, &q, err);
-            if (size_given || st != SQ_OK || q.inverted == 0 || k == DEFAULT_SIZE_HALVINGS) break;
-        }
+        st = split_road(f, &fi, &mo, size_given, args.quiet, &m, &q, err);
         t.mesh = sq_now() - t1;
-        if (st == SQ_OK && q.inverted > 0)
-            st = SQ_FAIL(err, SQ_ERR_LAYOUT,
-                         "%d quads have a non-positive Jacobian (min scaled Jacobian %.3g); try a "
-                         "smaller --size",
-                         q.inverted, q.min_scaled_jacobian);
+        if (st != SQ_OK && road.reason[0]) {
+            char split_msg[sizeof err->msg];
+            snprintf(split_msg, sizeof split_msg, "%s", err->msg);
+            st = SQ_FAIL(err, st, "%s; the split road: %s", road.reason, split_msg);
+        }
     }
     if (st == SQ_OK) {
         char line[256];
@@ -199,9 +295,11 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
         t.write = sq_now() - t2;
         t.total = sq_now() - t0;
         if (st == SQ_OK && args.report)
-            st = sq_write_mesh_report(args.report, args.input, model, args.face, &r, m, &q, &t, err);
+            st = sq_write_mesh_report(args.report, args.input, model, args.face, &fi, &road, &r, m,
+                                      &q, &t, err);
         if (st == SQ_OK && !args.quiet) printf("%s\n", line);
     }
+    sq_face_info_free(&fi);
     sq_quad_mesh_free(&m);
     sq_layout_result_free(&r);
     cad_face_free(&f);

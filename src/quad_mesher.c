@@ -945,6 +945,91 @@ static sq_status raise_order(const cad_face *face, const vmesh *v, int Q, sq_nod
     return SQ_OK;
 }
 
+/* Design 3 from the glued vertex mesh on: untangling, relaxation, order Q.
+ * *out is NULL unless SQ_OK. */
+static sq_status finish(const cad_face *face, const sq_face_info *info, vmesh *v,
+                        const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
+{
+    sq_status st = SQ_OK;
+    int Q = opt->order;
+    /* the boundary layers keep their grading: no smoothing there */
+    int *keep = NULL;
+    if (st == SQ_OK && opt->nbl > 0) {
+        double T = 1.5 * bl_thickness(opt, opt->bl_layers);
+        keep = calloc((size_t)v->nv + 1, sizeof(int));
+        if (!keep) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        for (int i = 0; i < v->nv && st == SQ_OK; i++)
+            for (int b = 0; b < opt->nbl && st == SQ_OK && !keep[i]; b++) {
+                double d;
+                st = cad_face_edge_project(face, opt->bl_edges[b], &v->xy[2 * i], NULL, NULL, &d, err);
+                keep[i] = d < T;
+            }
+    }
+    /* untangling, where transfinite interpolation folded a quad */
+    int folded = 0;
+    for (int q = 0; q < v->nq && st == SQ_OK; q++) folded += !quad_valid(v, q);
+    if (st == SQ_OK && folded) st = smooth(face, info, v, keep, err);
+    /* relaxed with the singular points free to even out their angles, then
+     * held where the field put them, then not relaxed at all: the first of
+     * these whose curved quads all have a scaled Jacobian of at least
+     * SJ_ACCEPT, else the one with the largest smallest scaled Jacobian */
+    double *smoothed = st == SQ_OK ? malloc(sizeof(double) * 2 * ((size_t)v->nv + 1)) : NULL;
+    if (st == SQ_OK && !smoothed) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) memcpy(smoothed, v->xy, sizeof(double) * 2 * (size_t)v->nv);
+    double best_sj = -HUGE_VAL;
+    sq_relax_work *work = NULL; /* the first relaxation's Hessian, for the second */
+    for (int attempt = 0; attempt < 3 && st == SQ_OK; attempt++) {
+        sq_quad_mesh *m = NULL;
+        memcpy(v->xy, smoothed, sizeof(double) * 2 * (size_t)v->nv);
+        int folded = 0;
+        if (attempt < 2) st = relax(face, info, v, keep, attempt == 0, &work, &folded, err);
+        if (folded) continue;
+        if (st == SQ_OK && opt->nbl > 0) st = bl_march(face, opt, v, err);
+        if (st == SQ_OK) st = raise_order(face, v, Q, opt->nodes, opt, &m, err);
+        sq_quad_quality qq;
+        if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, &qq, err);
+        if (st == SQ_OK && qq.min_scaled_jacobian > best_sj) {
+            best_sj = qq.min_scaled_jacobian;
+            sq_quad_mesh_free(out);
+            *out = m;
+            m = NULL;
+        }
+        sq_quad_mesh_free(&m);
+        if (best_sj >= SJ_ACCEPT) break;
+    }
+    sq_relax_work_free(&work);
+    if (st != SQ_OK) sq_quad_mesh_free(out);
+    free(smoothed);
+    free(keep);
+    return st;
+}
+
+sq_status sq_mesh_linear_quads(const cad_face *face, const sq_face_info *info,
+                               const sq_linear_quads *lq, const sq_mesher_options *opt,
+                               sq_quad_mesh **out, sq_error *err)
+{
+    *out = NULL;
+    if (opt->order < 1 || opt->order > 10)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "quad order %d outside 1..10", opt->order);
+    if (opt->nbl > 0)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "boundary layers need a quad layout (--bl)");
+    vmesh v = {lq->nv, lq->nq, malloc(sizeof(double) * 2 * ((size_t)lq->nv + 1)),
+               calloc((size_t)lq->nv + 1, sizeof(int)), malloc(sizeof(int) * 4 * ((size_t)lq->nq + 1)),
+               malloc(sizeof(int) * ((size_t)lq->nq + 1)), malloc(sizeof(int) * 4 * ((size_t)lq->nq + 1))};
+    sq_status st = v.xy && v.foot && v.quad && v.patch && v.side_tag
+                       ? SQ_OK
+                       : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) {
+        memcpy(v.xy, lq->xy, sizeof(double) * 2 * (size_t)lq->nv);
+        memcpy(v.quad, lq->quad, sizeof(int) * 4 * (size_t)lq->nq);
+        memcpy(v.patch, lq->block, sizeof(int) * (size_t)lq->nq);
+        memcpy(v.side_tag, lq->side_tag, sizeof(int) * 4 * (size_t)lq->nq);
+        st = finish(face, info, &v, opt, out, err);
+    }
+    vmesh_free(&v);
+    return st;
+}
+
 double sq_mesher_default_size(const sq_layout *L) { return sqrt(L->face_area) / 8.0; }
 
 sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const sq_layout *L,
@@ -1014,55 +1099,7 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
         st = fill_patch(L, &en, 1, q, &next_id, &grids[q], err);
     vmesh v = {0};
     if (st == SQ_OK) st = build_vmesh(L, grids, next_id, &v, err);
-    /* the boundary layers keep their grading: no smoothing there */
-    int *keep = NULL;
-    if (st == SQ_OK && opt->nbl > 0) {
-        double T = 1.5 * bl_thickness(opt, opt->bl_layers);
-        keep = calloc((size_t)v.nv + 1, sizeof(int));
-        if (!keep) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-        for (int i = 0; i < v.nv && st == SQ_OK; i++)
-            for (int b = 0; b < opt->nbl && st == SQ_OK && !keep[i]; b++) {
-                double d;
-                st = cad_face_edge_project(face, opt->bl_edges[b], &v.xy[2 * i], NULL, NULL, &d, err);
-                keep[i] = d < T;
-            }
-    }
-    /* untangling, where transfinite interpolation folded a quad */
-    int folded = 0;
-    for (int q = 0; q < v.nq && st == SQ_OK; q++) folded += !quad_valid(&v, q);
-    if (st == SQ_OK && folded) st = smooth(face, info, &v, keep, err);
-    /* relaxed with the singular points free to even out their angles, then
-     * held where the field put them, then not relaxed at all: the first of
-     * these whose curved quads all have a scaled Jacobian of at least
-     * SJ_ACCEPT, else the one with the largest smallest scaled Jacobian */
-    double *smoothed = st == SQ_OK ? malloc(sizeof(double) * 2 * ((size_t)v.nv + 1)) : NULL;
-    if (st == SQ_OK && !smoothed) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    if (st == SQ_OK) memcpy(smoothed, v.xy, sizeof(double) * 2 * (size_t)v.nv);
-    double best_sj = -HUGE_VAL;
-    sq_relax_work *work = NULL; /* the first relaxation's Hessian, for the second */
-    for (int attempt = 0; attempt < 3 && st == SQ_OK; attempt++) {
-        sq_quad_mesh *m = NULL;
-        memcpy(v.xy, smoothed, sizeof(double) * 2 * (size_t)v.nv);
-        int folded = 0;
-        if (attempt < 2) st = relax(face, info, &v, keep, attempt == 0, &work, &folded, err);
-        if (folded) continue;
-        if (st == SQ_OK && opt->nbl > 0) st = bl_march(face, opt, &v, err);
-        if (st == SQ_OK) st = raise_order(face, &v, Q, opt->nodes, opt, &m, err);
-        sq_quad_quality qq;
-        if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, &qq, err);
-        if (st == SQ_OK && qq.min_scaled_jacobian > best_sj) {
-            best_sj = qq.min_scaled_jacobian;
-            sq_quad_mesh_free(out);
-            *out = m;
-            m = NULL;
-        }
-        sq_quad_mesh_free(&m);
-        if (best_sj >= SJ_ACCEPT) break;
-    }
-    sq_relax_work_free(&work);
-    if (st != SQ_OK) sq_quad_mesh_free(out);
-    free(smoothed);
-    free(keep);
+    if (st == SQ_OK) st = finish(face, info, &v, opt, out, err);
     vmesh_free(&v);
     free(grade);
     free(elen);

@@ -66,4 +66,22 @@ sq_status sq_mesher_check_size(double area, double size, double max_quads, sq_er
 sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const sq_layout *L,
                          const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err);
 
+/* A straight-sided quad mesh of the face, corners only, whose boundary
+ * vertices lie on the CAD curves: what a road other than the layout's
+ * (quad_split.h) hands to the mesher. */
+typedef struct {
+    int nv, nq;
+    const double *xy;     /* 2*nv */
+    const int *quad;      /* 4*nq corner vertices, counter-clockwise */
+    const int *block;     /* nq: the block each quad belongs to (sq_quad_mesh.patch) */
+    const int *side_tag;  /* 4*nq: CAD edge under side k (corner k to k+1), or -1 */
+} sq_linear_quads;
+
+/* Design 3 (untangling, relaxation) and 4 (order opt->order, sides on the
+ * CAD curves) on a given straight-sided mesh; opt's size is not used and
+ * boundary layers are not made (SQ_ERR_USAGE if opt->nbl > 0). */
+sq_status sq_mesh_linear_quads(const cad_face *face, const sq_face_info *info,
+                               const sq_linear_quads *lq, const sq_mesher_options *opt,
+                               sq_quad_mesh **out, sq_error *err);
+
 #endif

@@ -567,8 +567,8 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
     memset(out, 0, sizeof *out);
     if (opt->order < 1 || opt->order > 12)
         return SQ_FAIL(err, SQ_ERR_USAGE, "order %d out of range 1..12", opt->order);
-    if (opt->min_angle_deg <= 0.0 || opt->min_angle_deg > 30.0)
-        return SQ_FAIL(err, SQ_ERR_USAGE, "minimum angle %g out of range (0, 30] degrees",
+    if (!(opt->min_angle_deg >= 0.0) || opt->min_angle_deg > 30.0)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "minimum angle %g out of range [0, 30] degrees",
                        opt->min_angle_deg);
     if (opt->max_turn_deg <= 0.0 || opt->max_turn_deg > 90.0)
         return SQ_FAIL(err, SQ_ERR_USAGE, "boundary turning %g out of range (0, 90] degrees",

@@ -22,7 +22,7 @@
 typedef struct {
     int order;            /* P, 1..12 */
     double size;          /* longest edge; <= 0: automatic (sqrt(area)/3) */
-    double min_angle_deg; /* CGAL's angle bound, default 20 */
+    double min_angle_deg; /* CGAL's angle bound, default 20; 0: none (size only) */
     double max_turn_deg;  /* largest boundary turning per segment, default 30 */
     int nextra;           /* points to insert as vertices, 2*nextra in extra_xy */
     const double *extra_xy;

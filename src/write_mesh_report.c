@@ -4,8 +4,11 @@
 #include "outfile.h"
 #include "write_layout.h"
 
+#include <string.h>
+
 sq_status sq_write_mesh_report(const char *path, const char *input, const cad_model *model,
-                               int face, const sq_layout_result *r, const sq_quad_mesh *m,
+                               int face, const sq_face_info *info, const sq_mesh_road *road,
+                               const sq_layout_result *r, const sq_quad_mesh *m,
                                const sq_quad_quality *q, const sq_mesh_timings *t, sq_error *err)
 {
     sq_outfile f;
@@ -13,7 +16,21 @@ sq_status sq_write_mesh_report(const char *path, const char *input, const cad_mo
     sq_json j;
     sq_json_init(&j, f.fp);
     sq_json_begin_object(&j);
-    sq_json_layout_head(&j, input, face, r);
+    int by_layout = !strcmp(road->name, "layout");
+    if (by_layout) {
+        sq_json_layout_head(&j, input, face, r);
+    } else {
+        sq_json_key(&j, "input");
+        sq_json_string(&j, input);
+        sq_json_key_int(&j, "face", face);
+        sq_json_key_int(&j, "chi", info->chi);
+    }
+    sq_json_key(&j, "road");
+    sq_json_string(&j, road->name);
+    if (road->reason[0]) {
+        sq_json_key(&j, "road_reason");
+        sq_json_string(&j, road->reason);
+    }
     sq_json_healing(&j, model, face);
     sq_json_key(&j, "mesh");
     sq_json_begin_object(&j);

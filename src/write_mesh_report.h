@@ -13,9 +13,20 @@ typedef struct {
     double read, triangulate, solve, critical_points, trace, layout, mesh, write, total;
 } sq_mesh_timings;
 
-/* model: the file read, for the face's "healing" key */
+/* The road the mesh took: "layout" (field, layout, patches) or "split"
+ * (quad_split.h), and, for a split road the layout road fell back on,
+ * why it did. */
+typedef struct {
+    const char *name;
+    char reason[512];
+} sq_mesh_road;
+
+/* model: the file read, for the face's "healing" key; info: the face; r:
+ * the layout road's result (its field and layout keys are written when
+ * the road is "layout") */
 sq_status sq_write_mesh_report(const char *path, const char *input, const cad_model *model,
-                               int face, const sq_layout_result *r, const sq_quad_mesh *m,
+                               int face, const sq_face_info *info, const sq_mesh_road *road,
+                               const sq_layout_result *r, const sq_quad_mesh *m,
                                const sq_quad_quality *q, const sq_mesh_timings *t, sq_error *err);
 
 #endif

@@ -1,0 +1,156 @@
+#include "quad_split.h"
+
+#include "triangulate.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+double sq_split_default_size(const sq_face_info *info) { return sqrt(fabs(info->area)) / 8.0; }
+
+/* Design 1.  With the angle bound, about area / size^2 vertices are
+ * expected: four times that (and a floor for the boundary's own points)
+ * before the bound is dropped, so a sliver does not run CGAL to the
+ * quad budget first. */
+static sq_status triangulate(const cad_face *face, const sq_face_info *info, double size,
+                             double max_quads, sq_triangulation *tri, sq_error *err)
+{
+    sq_tri_options to;
+    sq_tri_options_default(&to);
+    to.order = 1;
+    to.size = SQ_SPLIT_TRI_SIZE * size;
+    double budget = max_quads > 0.0 ? max_quads / 6.0 : 2e7;
+    double expected = 4.0 * fabs(info->area) / (to.size * to.size) + SQ_TRI_MAX_VERTICES;
+    to.max_vertices = (int)fmin(fmin(budget, expected), 2e7) + 3;
+    sq_error first;
+    sq_status st = sq_triangulate(face, &to, tri, &first);
+    if (st != SQ_ERR_GEOMETRY) {
+        if (st != SQ_OK) *err = first;
+        return st;
+    }
+    to.min_angle_deg = 0.0;
+    to.max_vertices = (int)fmin(budget, 2e7) + 3;
+    return sq_triangulate(face, &to, tri, err);
+}
+
+/* Arc length halfway along boundary edge k of triangle e (bs from
+ * sq_triangulate: along the curve's direction of travel, so a segment
+ * that ends before it starts crosses a closed curve's closing point). */
+static double mid_arc(const cad_face *face, const sq_triangulation *tri, int e, int k)
+{
+    int c = tri->mesh->btag[3 * e + k];
+    double s0 = tri->bs[6 * e + 2 * k], s1 = tri->bs[6 * e + 2 * k + 1];
+    double L = cad_face_edge_length(face, c);
+    if (s1 < s0) s1 += L;
+    double s = 0.5 * (s0 + s1);
+    return s > L ? s - L : s;
+}
+
+typedef struct {
+    int nv, nq;
+    double *xy;
+    int *quad, *block, *side_tag;
+} split_mesh;
+
+static void split_mesh_free(split_mesh *s)
+{
+    free(s->xy);
+    free(s->quad);
+    free(s->block);
+    free(s->side_tag);
+    memset(s, 0, sizeof *s);
+}
+
+/* The midpoint vertex of every triangle edge, once per edge (the lower
+ * triangle of the two makes it): mid[3e+k]. */
+static sq_status midpoints(const cad_face *face, const sq_triangulation *tri, split_mesh *s,
+                           int *mid, sq_error *err)
+{
+    const sem_tri_mesh *m = tri->mesh;
+    for (int e = 0; e < m->ntris; e++)
+        for (int k = 0; k < 3; k++) {
+            int n = m->neigh[3 * e + k];
+            if (n >= 0 && n < e) {
+                int a = m->tri[3 * e + k], kk = 0;
+                while (kk < 3 && m->tri[3 * n + (kk + 1) % 3] != a) kk++;
+                if (kk == 3)
+                    return SQ_FAIL(err, SQ_ERR_INTERNAL, "triangles %d and %d share no edge", e, n);
+                mid[3 * e + k] = mid[3 * n + kk];
+                continue;
+            }
+            int v = s->nv++;
+            const double *A = &m->vxy[2 * m->tri[3 * e + k]];
+            const double *B = &m->vxy[2 * m->tri[3 * e + (k + 1) % 3]];
+            s->xy[2 * v] = 0.5 * (A[0] + B[0]);
+            s->xy[2 * v + 1] = 0.5 * (A[1] + B[1]);
+            if (n < 0)
+                SQ_TRY(cad_face_edge_eval(face, m->btag[3 * e + k], mid_arc(face, tri, e, k),
+                                          &s->xy[2 * v], NULL, NULL, err));
+            mid[3 * e + k] = v;
+        }
+    return SQ_OK;
+}
+
+/* Design 2. */
+static sq_status split(const cad_face *face, const sq_triangulation *tri, split_mesh *s,
+                       sq_error *err)
+{
+    const sem_tri_mesh *m = tri->mesh;
+    size_t nvmax = (size_t)m->nverts + 4 * (size_t)m->ntris + 1;
+    s->xy = malloc(sizeof(double) * 2 * nvmax);
+    s->quad = malloc(sizeof(int) * 12 * ((size_t)m->ntris + 1));
+    s->block = malloc(sizeof(int) * 3 * ((size_t)m->ntris + 1));
+    s->side_tag = malloc(sizeof(int) * 12 * ((size_t)m->ntris + 1));
+    int *mid = malloc(sizeof(int) * 3 * ((size_t)m->ntris + 1));
+    if (!s->xy || !s->quad || !s->block || !s->side_tag || !mid) {
+        free(mid);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    memcpy(s->xy, m->vxy, sizeof(double) * 2 * (size_t)m->nverts);
+    s->nv = m->nverts;
+    sq_status st = midpoints(face, tri, s, mid, err);
+    for (int e = 0; e < m->ntris && st == SQ_OK; e++) {
+        int g = s->nv++;
+        const int *t = &m->tri[3 * e];
+        for (int d = 0; d < 2; d++)
+            s->xy[2 * g + d] = (m->vxy[2 * t[0] + d] + m->vxy[2 * t[1] + d] + m->vxy[2 * t[2] + d]) / 3.0;
+        /* the quad at vertex k: the vertex, the midpoint of edge k (to
+         * vertex k+1), the centroid, the midpoint of edge k+2 (from
+         * vertex k+2): counter-clockwise as the triangle */
+        for (int k = 0; k < 3; k++) {
+            int q = s->nq++, kp = (k + 2) % 3;
+            int *c = &s->quad[4 * q], *tg = &s->side_tag[4 * q];
+            c[0] = t[k], c[1] = mid[3 * e + k], c[2] = g, c[3] = mid[3 * e + kp];
+            tg[0] = m->btag[3 * e + k], tg[1] = tg[2] = -1, tg[3] = m->btag[3 * e + kp];
+            s->block[q] = e;
+        }
+    }
+    free(mid);
+    return st;
+}
+
+sq_status sq_mesh_split(const cad_face *face, const sq_face_info *info,
+                        const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
+{
+    *out = NULL;
+    double size = opt->size > 0.0 ? opt->size : sq_split_default_size(info);
+    if (opt->max_quads > 0.0) SQ_TRY(sq_mesher_check_size(info->area, size, opt->max_quads, err));
+    sq_triangulation tri;
+    SQ_TRY(triangulate(face, info, size, opt->max_quads, &tri, err));
+    sq_status st = SQ_OK;
+    double nquads = 3.0 * tri.mesh->ntris;
+    if (opt->max_quads > 0.0 && nquads > opt->max_quads)
+        st = SQ_FAIL(err, SQ_ERR_USAGE,
+                     "the split road at size %g gives %.3g quads, more than --max-quads %.3g; try a "
+                     "size of %.3g or more",
+                     size, nquads, opt->max_quads, size * sqrt(nquads / opt->max_quads));
+    split_mesh s = {0};
+    if (st == SQ_OK) st = split(face, &tri, &s, err);
+    sq_triangulation_free(&tri);
+    if (st == SQ_OK) {
+        sq_linear_quads lq = {s.nv, s.nq, s.xy, s.quad, s.block, s.side_tag};
+        st = sq_mesh_linear_quads(face, info, &lq, opt, out, err);
+    }
+    split_mesh_free(&s);
+    return st;
+}
