@@ -282,7 +282,7 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
         if (st != SQ_OK && road.reason[0]) {
             char split_msg[sizeof err->msg];
             snprintf(split_msg, sizeof split_msg, "%s", err->msg);
-            st = SQ_FAIL(err, st, "%s; the split road: %s", road.reason, split_msg);
+            st = SQ_FAIL(err, st, "%s (the split road; the layout road: %s)", split_msg, road.reason);
         }
     }
     if (st == SQ_OK) {

@@ -1551,7 +1551,7 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
         if (sq_layout_check(L, &d) > 0 && st == SQ_OK) {
             char buf[400];
             sq_layout_defects_summary(&d, buf, sizeof buf);
-            st = SQ_FAIL(err, SQ_ERR_LAYOUT, "no valid layout: %s", buf);
+            st = SQ_FAIL(err, SQ_ERR_LAYOUT, "%s", buf);
         }
     } else if (st != SQ_ERR_LAYOUT) {
         sq_layout_free(L);
