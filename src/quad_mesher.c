@@ -842,12 +842,15 @@ static sq_status raise_order(const cad_face *face, const vmesh *v, int Q, sq_nod
                 if (tag >= 0) {
                     st = arc_on_edge(face, tag, A, &s0, err);
                     if (st == SQ_OK) st = arc_on_edge(face, tag, B, &s1, err);
-                    /* a closed edge: the shorter way round */
+                    /* the quad walks its boundary side along the curve's
+                     * direction of travel (both keep the face on the left):
+                     * arc lengths that decrease that way cross a closed
+                     * curve's closing point.  (Not "the shorter way round":
+                     * a side may cover half a curve or more, a short edge
+                     * taken whole by one quad.) */
                     double Lc = cad_face_edge_length(face, tag);
-                    if (st == SQ_OK && fabs(s1 - s0) > 0.5 * Lc) {
-                        if (s1 > s0) s0 += Lc;
-                        else s1 += Lc;
-                    }
+                    if (a == sa[f] && s1 < s0) s1 += Lc;
+                    else if (a != sa[f] && s0 < s1) s0 += Lc;
                 }
                 int lc = -1;
                 double ls0 = 0.0, ls1 = 0.0, ld0 = 0.0, ld1 = 0.0;
