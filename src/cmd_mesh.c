@@ -257,6 +257,7 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
     progress(args.quiet, "semquad: read %s", args.input, t.read);
     sq_face_info fi;
     sq_status st = sq_face_info_compute(f, &fi, err);
+    if (st == SQ_OK) st = sq_face_check_cusps(&fi, err);
     /* a --size that would exhaust memory is refused before any work */
     if (st == SQ_OK && size_given) st = sq_mesher_check_size(fi.area, mo.size, mo.max_quads, err);
     sq_layout_result r;
@@ -264,9 +265,9 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
     sq_quad_mesh *m = NULL;
     sq_quad_quality q;
     sq_mesh_road road = {road_choice == ROAD_SPLIT ? "split" : "layout", ""};
-    if (st == SQ_OK && road_choice != ROAD_SPLIT)
-        st = layout_road(f, &lo, &mo, size_given, args.quiet, &r, &m, &q, &t, err);
-    if (road_choice == ROAD_AUTO && takes_split_road(st, &lo, &mo)) {
+    int layout_ran = st == SQ_OK && road_choice != ROAD_SPLIT;
+    if (layout_ran) st = layout_road(f, &lo, &mo, size_given, args.quiet, &r, &m, &q, &t, err);
+    if (layout_ran && road_choice == ROAD_AUTO && takes_split_road(st, &lo, &mo)) {
         snprintf(road.reason, sizeof road.reason, "%s", err->msg);
         if (!args.quiet)
             fprintf(stderr, "semquad: note: the layout road failed (%s); meshing by the split road\n",

@@ -133,6 +133,18 @@ sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_erro
     return st;
 }
 
+sq_status sq_face_check_cusps(const sq_face_info *info, sq_error *err)
+{
+    for (int k = 0; k < info->nvertices; k++)
+        if (info->vertices[k].angle_deg < SQ_CUSP_TOL_DEG)
+            return SQ_FAIL(err, SQ_ERR_LAYOUT,
+                           "no all-quad mesh with positive Jacobians: the corner at (%.10g, %.10g) "
+                           "is a cusp (interior angle %.2g deg: its two edges are tangent), and a "
+                           "quad's corner there has a zero angle",
+                           info->vertices[k].x, info->vertices[k].y, info->vertices[k].angle_deg);
+    return SQ_OK;
+}
+
 void sq_face_info_free(sq_face_info *info)
 {
     if (!info) return;

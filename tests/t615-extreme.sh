@@ -9,6 +9,10 @@
 #  - a 9.5-degree parallelogram and a 0.6-degree needle: the field's graded
 #    coarse triangulation comes out (no "16 refinements"), within seconds;
 #  - a 500-sided polygon: its triangulation (every corner graded) in seconds;
+#  - a cusp (a rectangle cut by a disc tangent to its side: two edges
+#    tangent at their vertex, interior angle 0): no all-quad mesh with
+#    positive Jacobians exists; refused at once (exit 6, one line naming the
+#    cusp), neither road tried;
 #  - --max-quads: a size past it is refused before any work (exit 2, one
 #    line, no output file), naming the size that fits.
 # Each run is bounded by `timeout` (seconds, far above the ~1-3 s they take,
@@ -37,6 +41,7 @@ faces = {
     "sliver": lambda: occ.addRectangle(0, 0, 0, 1, 1e-6),
     "parallelogram": lambda: poly([(0, 0), (1, 0), (1.2619, 0.0436136), (0.2619, 0.0436136)]),
     "needle": lambda: poly([(0, 0), (1, 0), (1, 0.01)]),
+    "cusp": lambda: occ.cut([(2, occ.addRectangle(-1, 0, 0, 2, 1))], [(2, occ.addDisk(0, 1, 0, 1, 1))]),
     "poly500": lambda: poly([(math.cos(2 * math.pi * k / 500), math.sin(2 * math.pi * k / 500))
                              for k in range(500)]),
 }
@@ -73,6 +78,9 @@ print("" if ok else "report: road %s, min scaled Jacobian %s, %s inverted" % (
     d["road"], m["min_scaled_jacobian"], m["inverted"]))
 sys.exit(0 if ok else 1)
 PY
+expect cusp 6 30 "$sq" mesh "$tmp/cusp.step" -q -o "$tmp/c.msh"
+grep -q "is a cusp" "$tmp/err" || fail "cusp: not named: $(cat "$tmp/err")"
+[ ! -e "$tmp/c.msh" ] || fail "cusp: output file left behind"
 expect parallelogram 0 30 "$sq" field "$tmp/parallelogram.step"
 expect needle 0 30 "$sq" field "$tmp/needle.step"
 expect poly500 0 30 "$sq" triangulate "$tmp/poly500.step" --order 8
