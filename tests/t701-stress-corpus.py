@@ -54,8 +54,6 @@ KNOWN_FAILING = {
     18: "separatrix starts: no direction at a 135-degree corner next to a tiny edge (exit 1)",
     8: "triangulation: near-tangent hole's chords cross",
     56: "triangulation: near-tangent hole's chords cross",
-    15: "reader: overlapping holes not refused (exit 1)",
-    31: "reader: self-crossing outline not refused (exit 6)",
 }
 # a face that hangs fails the test instead of the whole suite waiting for it
 FACE_TIMEOUT = 120
