@@ -218,6 +218,15 @@ typedef struct {
 sq_status cad_cdt_mesh(const cad_cdt_input *in, cad_cdt_output *out, sq_error *err);
 void cad_cdt_output_free(cad_cdt_output *out); /* frees the arrays, zeroes the struct */
 
+/* The pairs of segments (2*nsegments point indices into xy) that meet other
+ * than at an end point they share (the same index or the same coordinates),
+ * decided by CGAL's exact predicates: what cad_cdt_mesh would refuse as
+ * crossing constraints, and segments that overlap along a line.  *pairs
+ * (malloc'd, the caller frees it; NULL on failure) gets 2 * *npairs segment
+ * indices, each pair (k < l), sorted; at most max_pairs pairs (<= 0: all). */
+sq_status cad_segments_crossing(int npoints, const double *xy, int nsegments, const int *seg,
+                                int max_pairs, int **pairs, int *npairs, sq_error *err);
+
 
 /* ---- cutting a face into sub-faces (cad_split.cpp) ------------------------ */
 

@@ -16,12 +16,15 @@
 // OpenCASCADE headers define a Handle macro that breaks CGAL: only cad.h here.
 #include "cad.h"
 
+#include <CGAL/Box_intersection_d/Box_with_info_d.h>
 #include <CGAL/Constrained_Delaunay_triangulation_2.h>
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Delaunay_mesh_vertex_base_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_2/Face_badness.h>
+#include <CGAL/box_intersection_d.h>
+#include <CGAL/intersections.h>
 
 #include <algorithm>
 #include <cmath>
@@ -266,9 +269,82 @@ sq_status cdt_mesh(const cad_cdt_input *in, cad_cdt_output *out, sq_error *err)
     return SQ_OK;
 }
 
+// Design of cad_segments_crossing: CGAL's box intersection finds the pairs
+// of segments whose boxes overlap, the kernel's exact predicates decide
+// whether they meet; an end point the two share (by index or by
+// coordinates) is where consecutive segments meet, no crossing.
+sq_status segments_crossing(int np, const double *xy, int ns, const int *seg, int max_pairs,
+                            int **pairs, int *npairs, sq_error *err)
+{
+    typedef CGAL::Box_intersection_d::Box_with_info_d<double, 2, int> Box;
+    std::vector<Box> boxes;
+    boxes.reserve((size_t)ns);
+    for (int k = 0; k < ns; ++k) {
+        const int a = seg[2 * k], b = seg[2 * k + 1];
+        if (a < 0 || a >= np || b < 0 || b >= np)
+            return SQ_FAIL(err, SQ_ERR_USAGE, "cad_segments_crossing: segment %d refers to point "
+                           "%d or %d of %d", k, a, b, np);
+        boxes.push_back(Box(Point(xy[2 * a], xy[2 * a + 1]).bbox() +
+                                Point(xy[2 * b], xy[2 * b + 1]).bbox(),
+                            k));
+    }
+    std::vector<int> found;
+    auto same = [&](int i, int j) {
+        return i == j || (xy[2 * i] == xy[2 * j] && xy[2 * i + 1] == xy[2 * j + 1]);
+    };
+    auto report = [&](const Box &p, const Box &q) {
+        if (max_pairs > 0 && (int)found.size() >= 2 * max_pairs) return;
+        const int k = p.info(), l = q.info();
+        const int a = seg[2 * k], b = seg[2 * k + 1], c = seg[2 * l], d = seg[2 * l + 1];
+        const K::Segment_2 s(Point(xy[2 * a], xy[2 * a + 1]), Point(xy[2 * b], xy[2 * b + 1]));
+        const K::Segment_2 t(Point(xy[2 * c], xy[2 * c + 1]), Point(xy[2 * d], xy[2 * d + 1]));
+        if (s.is_degenerate() || t.is_degenerate() || !CGAL::do_intersect(s, t)) return;
+        // segments sharing an end meet there: a crossing only if they run
+        // on along the same line (or share both ends)
+        const int shared = same(a, c) ? a : same(a, d) ? a : same(b, c) ? b : same(b, d) ? b : -1;
+        if (shared >= 0 && !((same(a, c) && same(b, d)) || (same(a, d) && same(b, c)))) {
+            const Point P(xy[2 * shared], xy[2 * shared + 1]);
+            const Point X = shared == a ? s.target() : s.source();
+            const Point Y = same(shared, c) ? t.target() : t.source();
+            if (!CGAL::collinear(P, X, Y) || CGAL::angle(X, P, Y) != CGAL::ACUTE) return;
+        }
+        found.push_back(std::min(k, l));
+        found.push_back(std::max(k, l));
+    };
+    CGAL::box_self_intersection_d(boxes.begin(), boxes.end(), report);
+    // box order is CGAL's: sort so the answer does not depend on it
+    std::vector<std::pair<int, int>> pr;
+    for (size_t i = 0; i < found.size(); i += 2) pr.push_back(std::make_pair(found[i], found[i + 1]));
+    std::sort(pr.begin(), pr.end());
+    *npairs = (int)pr.size();
+    *pairs = (int *)std::malloc(sizeof(int) * (2 * pr.size() + 1));
+    if (!*pairs) return SQ_FAIL(err, SQ_ERR_INTERNAL, "cad_segments_crossing: out of memory");
+    for (size_t i = 0; i < pr.size(); ++i) {
+        (*pairs)[2 * i] = pr[i].first;
+        (*pairs)[2 * i + 1] = pr[i].second;
+    }
+    return SQ_OK;
+}
+
 } // namespace
 
 extern "C" {
+
+sq_status cad_segments_crossing(int npoints, const double *xy, int nsegments, const int *seg,
+                                int max_pairs, int **pairs, int *npairs, sq_error *err)
+{
+    *pairs = NULL;
+    *npairs = 0;
+    try {
+        return segments_crossing(npoints, xy, nsegments, seg, max_pairs, pairs, npairs, err);
+    }
+    catch (const std::bad_alloc &) {
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "cad_segments_crossing: out of memory");
+    }
+    catch (const std::exception &e) {
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "cad_segments_crossing: CGAL failed: %s", e.what());
+    }
+}
 
 sq_status cad_cdt_mesh(const cad_cdt_input *in, cad_cdt_output *out, sq_error *err)
 {

@@ -20,10 +20,31 @@
 //     precision = the face's own, maximal tolerance = the healing tolerance;
 //     the fixed face is analysed again (step 1 at its new edge tolerances)
 //     and replaces the face in the model, or the face is broken if a defect
-//     is left.
+//     is left;
+//  5. every planar face, healed or not, is then checked to be a face at all
+//     (loops that cross, a hole not inside the outer loop, holes that
+//     overlap make it broken, with the loops and a point named): its
+//     loops' p-curves are intersected pairwise, non-adjacent edges only
+//     (ShapeAnalysis_Wire::CheckIntersectingEdges, boxes first), then a
+//     point of each hole edge is classified against the other loops
+//     (BRepTopAdaptor_FClass2d).  The STEP reader's own healing splits a
+//     file's face whose loops cross into several faces; those are broken
+//     too (cad_model.cpp marks them).
 #include "cad_private.hxx"
 
 #include <BRepAdaptor_Curve.hxx>
+#include <BRepGProp.hxx>
+#include <BRepTopAdaptor_FClass2d.hxx>
+#include <Bnd_Box2d.hxx>
+#include <BndLib_Add2dCurve.hxx>
+#include <GProp_GProps.hxx>
+#include <Geom2d_Curve.hxx>
+#include <Geom_Surface.hxx>
+#include <Geom2dAdaptor_Curve.hxx>
+#include <IntRes2d_SequenceOfIntersectionPoint.hxx>
+#include <ShapeAnalysis_Edge.hxx>
+#include <TColStd_SequenceOfReal.hxx>
+#include <TColgp_SequenceOfPnt.hxx>
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Builder.hxx>
@@ -45,6 +66,7 @@
 #include <cmath>
 #include <cstdio>
 #include <cstring>
+#include <memory>
 
 namespace {
 
@@ -200,6 +222,157 @@ TopoDS_Face fix_face(const TopoDS_Face &face, double prec, double tol)
     return out;
 }
 
+// The edges of every wire of a face, wire by wire in the order of travel
+// (wires numbered as in the file), and where each wire's edges start.
+struct face_loops {
+    Handle(ShapeExtend_WireData) edges = new ShapeExtend_WireData;
+    std::vector<int> first; // per wire, 1-based index of its first edge; then the end
+    std::vector<TopoDS_Wire> wires;
+    int wire_of(int e) const
+    {
+        return (int)(std::upper_bound(first.begin(), first.end(), e) - first.begin()) - 1;
+    }
+};
+
+face_loops collect_loops(const TopoDS_Face &face)
+{
+    face_loops L;
+    for (TopoDS_Iterator it(face); it.More(); it.Next()) {
+        if (it.Value().ShapeType() != TopAbs_WIRE) continue;
+        L.first.push_back(L.edges->NbEdges() + 1);
+        L.wires.push_back(TopoDS::Wire(it.Value()));
+        for (BRepTools_WireExplorer wx(L.wires.back(), face); wx.More(); wx.Next())
+            if (!BRep_Tool::Degenerated(wx.Current())) L.edges->Add(wx.Current());
+    }
+    L.first.push_back(L.edges->NbEdges() + 1);
+    return L;
+}
+
+// True when edges i < j are consecutive along one wire (they meet at
+// their shared vertex, which is no crossing).
+bool adjacent(const face_loops &L, int i, int j)
+{
+    const int w = L.wire_of(i);
+    if (L.wire_of(j) != w) return false;
+    return j == i + 1 || (i == L.first[(size_t)w] && j == L.first[(size_t)w + 1] - 1);
+}
+
+std::string at_text(const gp_Pnt &p)
+{
+    char buf[120];
+    std::snprintf(buf, sizeof buf, "(%.6g, %.6g, %.6g)", p.X(), p.Y(), p.Z());
+    return buf;
+}
+
+// Two non-adjacent edges whose p-curves meet (design 5); empty if none.
+std::string crossing_edges(const TopoDS_Face &face, const face_loops &L, double prec)
+{
+    const int n = L.edges->NbEdges();
+    std::vector<Bnd_Box2d> box((size_t)n + 1);
+    ShapeAnalysis_Edge sae;
+    for (int i = 1; i <= n; ++i) {
+        Handle(Geom2d_Curve) c;
+        double a, b;
+        if (sae.PCurve(L.edges->Edge(i), face, c, a, b, Standard_False))
+            BndLib_Add2dCurve::Add(Geom2dAdaptor_Curve(c, a, b), prec, box[(size_t)i]);
+    }
+    ShapeAnalysis_Wire saw(L.edges, face, prec);
+    for (int i = 1; i <= n; ++i)
+        for (int j = i + 1; j <= n; ++j) {
+            if (box[(size_t)i].IsOut(box[(size_t)j]) || adjacent(L, i, j)) continue;
+            IntRes2d_SequenceOfIntersectionPoint p2;
+            TColgp_SequenceOfPnt p3;
+            TColStd_SequenceOfReal errs;
+            if (!saw.CheckIntersectingEdges(i, j, p2, p3, errs) || p3.IsEmpty()) continue;
+            const int wi = L.wire_of(i), wj = L.wire_of(j);
+            char buf[200];
+            if (wi == wj)
+                std::snprintf(buf, sizeof buf, "wire %d crosses itself (edges %d and %d) at ", wi,
+                              i - L.first[(size_t)wi], j - L.first[(size_t)wi]);
+            else
+                std::snprintf(buf, sizeof buf, "wires %d and %d cross (edges %d and %d) at ", wi,
+                              wj, i - L.first[(size_t)wi], j - L.first[(size_t)wj]);
+            return buf + at_text(p3(1));
+        }
+    return "";
+}
+
+// A wire alone, as a face of the plane, and its classifier: the loop's
+// inside is where it classifies IN, or OUT for a clockwise (hole) wire,
+// whose face holds the infinite point.
+struct loop_region {
+    TopoDS_Face face;
+    std::unique_ptr<BRepTopAdaptor_FClass2d> fc;
+    bool inverted = false;
+    double area = 0;
+};
+
+void make_region(const TopoDS_Face &face, const TopoDS_Wire &w, double prec, loop_region &r)
+{
+    r.face = TopoDS::Face(face.EmptyCopied());
+    BRep_Builder().Add(r.face, w);
+    r.fc.reset(new BRepTopAdaptor_FClass2d(r.face, prec));
+    r.inverted = r.fc->PerformInfinitePoint() == TopAbs_IN;
+    GProp_GProps g;
+    BRepGProp::SurfaceProperties(r.face, g);
+    r.area = std::fabs(g.Mass());
+}
+
+// 1: uv strictly inside the loop, 0: strictly outside, -1: on it.
+int inside(const loop_region &r, const gp_Pnt2d &uv)
+{
+    const TopAbs_State s = r.fc->Perform(uv);
+    if (s != TopAbs_IN && s != TopAbs_OUT) return -1;
+    return (s == TopAbs_IN) != r.inverted;
+}
+
+// A hole not strictly inside the outer loop, or inside another hole
+// (design 5): its edges' midpoints classified (the loops do not cross
+// here, so any point of an edge tells where the whole edge lies).
+std::string misplaced_hole(const TopoDS_Face &face, const face_loops &L, double prec)
+{
+    const int nw = (int)L.wires.size();
+    if (nw < 2) return "";
+    std::vector<loop_region> r((size_t)nw);
+    int outer = 0;
+    for (int w = 0; w < nw; ++w) {
+        make_region(face, L.wires[(size_t)w], prec, r[(size_t)w]);
+        if (r[(size_t)w].area > r[(size_t)outer].area) outer = w;
+    }
+    ShapeAnalysis_Edge sae;
+    for (int h = 0; h < nw; ++h) {
+        if (h == outer) continue;
+        for (int e = L.first[(size_t)h]; e < L.first[(size_t)h + 1]; ++e) {
+            Handle(Geom2d_Curve) c;
+            double a, b;
+            if (!sae.PCurve(L.edges->Edge(e), face, c, a, b, Standard_False)) continue;
+            const gp_Pnt2d uv = c->Value(0.5 * (a + b));
+            const std::string at = at_text(BRep_Tool::Surface(face)->Value(uv.X(), uv.Y()));
+            char buf[200];
+            if (inside(r[(size_t)outer], uv) == 0) {
+                std::snprintf(buf, sizeof buf, "hole wire %d is not inside the outer wire %d: its edge %d passes outside at ",
+                              h, outer, e - L.first[(size_t)h]);
+                return buf + at;
+            }
+            for (int g = 0; g < nw; ++g)
+                if (g != outer && g != h && inside(r[(size_t)g], uv) == 1) {
+                    std::snprintf(buf, sizeof buf, "hole wires %d and %d overlap: edge %d of wire %d lies inside wire %d at ",
+                                  h, g, e - L.first[(size_t)h], h, g);
+                    return buf + at;
+                }
+        }
+    }
+    return "";
+}
+
+// Why the face is no face (design 5): empty if its loops are sound.
+std::string check_loops(const TopoDS_Face &face, double prec)
+{
+    const face_loops L = collect_loops(face);
+    std::string why = crossing_edges(face, L, prec);
+    return why.empty() ? misplaced_hole(face, L, prec) : why;
+}
+
 // Heal face i of the model (design 2-4).
 void heal_face(cad_model *m, int i, double file_tol, bool given)
 {
@@ -257,10 +430,23 @@ void heal_model(cad_model *m, double tol, bool given)
             m->status[(size_t)i] = CAD_FACE_NOT_PLANAR;
             continue;
         }
-        if (!(tol > 0)) continue; // healing off
+        for (const auto &s : m->split)
+            if (s.first.IsSame(m->faces(i + 1))) {
+                m->status[(size_t)i] = CAD_FACE_BROKEN;
+                m->reason[(size_t)i] = s.second;
+            }
+        if (m->status[(size_t)i] == CAD_FACE_BROKEN) continue;
         try {
             OCC_CATCH_SIGNALS
-            heal_face(m, i, tol, given);
+            if (tol > 0) heal_face(m, i, tol, given); // else healing off
+            if (m->status[(size_t)i] == CAD_FACE_BROKEN) continue;
+            const TopoDS_Face face = TopoDS::Face(m->faces(i + 1));
+            std::string why =
+                check_loops(face, std::min(face_precision(face), 1e-8 * sqcad::face_size(face)));
+            if (!why.empty()) {
+                m->status[(size_t)i] = CAD_FACE_BROKEN;
+                m->reason[(size_t)i] = why;
+            }
         } catch (const Standard_Failure &e) {
             m->status[(size_t)i] = CAD_FACE_BROKEN;
             m->reason[(size_t)i] = std::string("healing failed (OpenCASCADE ") +

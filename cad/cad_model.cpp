@@ -22,6 +22,10 @@
 #include <Interface_CheckIterator.hxx>
 #include <OSD.hxx>
 #include <StepBasic_UncertaintyMeasureWithUnit.hxx>
+#include <StepShape_Face.hxx>
+#include <TransferBRep.hxx>
+#include <Transfer_TransientProcess.hxx>
+#include <XSControl_TransferReader.hxx>
 #include <StepData_StepModel.hxx>
 #include <Standard_ErrorHandler.hxx>
 #include <TopExp_Explorer.hxx>
@@ -146,6 +150,30 @@ double iges_flag_mm(int flag)
     }
 }
 
+// The reader's healing (ShapeFix) splits a face of the file whose loops
+// cross, or whose hole lies outside its outline, into several valid faces:
+// meshing one of them would mesh another face than the file's, so each is
+// marked (heal_model makes it broken).
+void mark_split_faces(STEPControl_Reader &reader, cad_model *m)
+{
+    Handle(StepData_StepModel) model = reader.StepModel();
+    Handle(Transfer_TransientProcess) tp = reader.WS()->TransferReader()->TransientProcess();
+    for (int i = 1; !model.IsNull() && !tp.IsNull() && i <= model->NbEntities(); ++i) {
+        Handle(StepShape_Face) f = Handle(StepShape_Face)::DownCast(model->Value(i));
+        if (f.IsNull()) continue;
+        TopoDS_Shape s = TransferBRep::ShapeResult(tp, f);
+        int n = 0;
+        for (TopExp_Explorer ex(s, TopAbs_FACE); ex.More(); ex.Next()) ++n;
+        if (n < 2) continue;
+        char buf[300];
+        std::snprintf(buf, sizeof buf, "the file's face #%d has loops that cross or a hole outside "
+                      "its outer loop (OpenCASCADE's reader split it into %d faces)",
+                      model->IdentLabel(f), n);
+        for (TopExp_Explorer ex(s, TopAbs_FACE); ex.More(); ex.Next())
+            m->split.push_back(std::make_pair(ex.Current(), std::string(buf)));
+    }
+}
+
 sq_status read_step(const char *path, cad_model *m, sq_error *err)
 {
     STEPControl_Reader reader;
@@ -183,6 +211,7 @@ sq_status read_step(const char *path, cad_model *m, sq_error *err)
                        path, why.empty() ? "" : " (", why.c_str(), why.empty() ? "" : ")");
     }
     m->shape = reader.OneShape();
+    mark_split_faces(reader, m);
     return SQ_OK;
 }
 

@@ -14,6 +14,7 @@
 #include <exception>
 #include <new>
 #include <string>
+#include <utility>
 #include <vector>
 
 namespace sqcad {
@@ -41,6 +42,9 @@ struct cad_model {
     std::vector<int> status; // per face, a cad_face_status
     std::vector<std::string> reason; // per face, why it is broken
     std::vector<std::vector<sqcad::heal_record>> heals; // per face, what was healed
+    // faces the STEP reader made by splitting one face of the file whose
+    // loops cross, each with the reason it is broken
+    std::vector<std::pair<TopoDS_Shape, std::string>> split;
 };
 
 namespace sqcad {
@@ -56,8 +60,9 @@ bool face_plane(const TopoDS_Face &face, gp_Pln *pln);
 double face_size(const TopoDS_Face &face);
 
 // Fill m->status, reason and heals; heal the planar faces whose defects
-// are within tol (given: tol is the user's, not capped by the face's size);
-// tol <= 0: no healing, every planar face is ok.
+// are within tol (given: tol is the user's, not capped by the face's size;
+// tol <= 0: no healing); a planar face in m->split, or whose loops cross
+// or whose holes are not inside its outer loop, is broken.
 void heal_model(cad_model *m, double tol, bool given);
 
 } // namespace sqcad

@@ -22,6 +22,11 @@ void sq_field_options_default(sq_field_options *opt)
     opt->grading = 1e-3;
 }
 
+int sq_vertex_near_straight(const sq_vertex *v)
+{
+    return !v->smooth && fabs(v->angle_deg - 180.0) < SQ_NEAR_STRAIGHT_TOL_DEG;
+}
+
 sq_status sq_singular_vertices(const cad_face *face, const sq_face_info *info, double *xy, int *n,
                                sq_error *err)
 {
@@ -39,7 +44,7 @@ sq_status sq_singular_vertices(const cad_face *face, const sq_face_info *info, d
             double scale = hypot(info->bbox[2] - info->bbox[0], info->bbox[3] - info->bbox[1]);
             singular = v->smooth && fabs(kin - kout) * scale > 1e-6;
         }
-        if (!singular) continue;
+        if (!singular || sq_vertex_near_straight(v)) continue;
         xy[2 * *n] = v->x;
         xy[2 * *n + 1] = v->y;
         (*n)++;

@@ -16,10 +16,24 @@ typedef struct {
                            see sq_singular_vertices); 0: no grading */
 } sq_field_options;
 
+/* Corners turning by less than this (degrees) are near-straight: the
+ * field's boundary direction jumps there by 4 times the turn, under 40
+ * degrees, so next to the jump |(u, v)| stays above cos 20 deg = 0.94: no
+ * zero of the field can sit there unresolved; such a corner takes 2 quads
+ * and starts no separatrix.  They are not graded: a polygon of hundreds of
+ * such corners (a circle drawn as a polygon) would otherwise get a graded
+ * ring of elements at each (21k triangles, 86 s on a 155-gon). */
+#define SQ_NEAR_STRAIGHT_TOL_DEG 10.0
+
+/* 1 if the vertex is not smooth but turns by less than
+ * SQ_NEAR_STRAIGHT_TOL_DEG (either way). */
+int sq_vertex_near_straight(const sq_vertex *v);
+
 /* Boundary vertices where the guiding field is singular and limits
  * convergence to algebraic rates: corners whose angle is not a multiple of
  * 90 degrees (the boundary data jumps), re-entrant corners, and smooth
- * junctions where the curvature jumps.  xy[2*nvertices]; returns the count. */
+ * junctions where the curvature jumps; near-straight corners are left out.
+ * xy[2*nvertices]; returns the count. */
 sq_status sq_singular_vertices(const cad_face *face, const sq_face_info *info, double *xy, int *n,
                                sq_error *err);
 

@@ -181,6 +181,7 @@ sq_status sq_htheta_compute(const cad_face *face, const sq_pattern *pattern,
     for (int i = 0; i < nv; i++) {
         const sq_vertex *v = &out->info.vertices[i];
         if (fabs(out->balance.quads[i] * M_PI_2 - v->angle_deg * M_PI / 180.0) < 1e-12) continue;
+        if (out->balance.quads[i] == 2 && sq_vertex_near_straight(v)) continue;
         int dup = 0;
         for (int q = np; q < nextra; q++)
             dup |= hypot(extra[2 * q] - v->x, extra[2 * q + 1] - v->y) < 1e-12;

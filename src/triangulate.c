@@ -12,6 +12,9 @@
 
 #define MAX_ROUNDS 16 /* boundary re-discretizations before giving up */
 #define MIN_SCALED_JAC 0.05 /* below this a curved element is split further */
+/* Halvings of crossing chords before giving up: 40 take a chord down to
+ * 1e-12 of its length, past any gap double precision can resolve. */
+#define MAX_UNTANGLE 40
 
 /* Sorted arc lengths of the discretization points of every CAD edge (each
  * list starts with 0; the edge's end is the next edge's start). */
@@ -285,6 +288,46 @@ static double seg_end_s(const cad_face *face, const bpoly *p, int i)
                                                           : cad_face_edge_length(face, p->edge[i]);
 }
 
+/* Where two loops (or two parts of one) come closer than a chord's
+ * sagitta, the chords cross although the curves do not (a near-tangent
+ * hole): both chords are halved, on their curves, until no two cross, so
+ * that the polygon is simple for the CDT.  Only the crossing chords are
+ * split, so the work stays near the close approach; a face whose curves
+ * do cross (or touch) is refused after MAX_UNTANGLE halvings. */
+static sq_status untangle(const cad_face *face, const sq_tri_options *opt, bpoly *p, bdisc *b,
+                          sq_error *err)
+{
+    sq_status st = SQ_OK;
+    for (int round = 0; st == SQ_OK; round++) {
+        int *seg = malloc(sizeof(int) * 2 * (size_t)p->np), *pairs = NULL, npairs = 0;
+        if (!seg) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        for (int i = 0; i < p->np; i++) {
+            seg[2 * i] = i;
+            seg[2 * i + 1] = p->next[i];
+        }
+        st = cad_segments_crossing(p->np, p->xy, p->np, seg, 0, &pairs, &npairs, err);
+        free(seg);
+        if (st == SQ_OK && npairs > 0 &&
+            (round == MAX_UNTANGLE || (opt->max_vertices > 0 && p->np > opt->max_vertices))) {
+            const double *q = &p->xy[2 * pairs[0]];
+            st = SQ_FAIL(err, SQ_ERR_GEOMETRY,
+                         "the face's boundary curves cross or touch near (%.6g, %.6g): their "
+                         "chords still cross after %d halvings",
+                         q[0], q[1], round);
+        }
+        for (int k = 0; k < 2 * npairs && st == SQ_OK; k++) {
+            int i = pairs[k];
+            st = bdisc_insert(b, p->edge[i], 0.5 * (p->s[i] + seg_end_s(face, p, i)), err);
+        }
+        free(pairs);
+        if (st != SQ_OK || npairs == 0) return st;
+        bpoly_free(p);
+        bdisc_sort(b);
+        st = bpoly_build(face, b, p, err);
+    }
+    return st;
+}
+
 static int point_in_polygon(const bpoly *p, int start, const double q[2])
 {
     int inside = 0, i = start;
@@ -515,8 +558,13 @@ static sq_status build_mesh(const cad_face *face, const sq_tri_options *opt, con
             int va = o->tri[3 * e + k], vb = o->tri[3 * e + (k + 1) % 3];
             int i = o->source[va];
             if (i < 0 || i >= p->np || p->next[i] != o->source[vb]) {
-                st = SQ_FAIL(err, SQ_ERR_INTERNAL,
-                             "boundary edge of triangle %d is not a boundary segment", e);
+                /* the CDT's domain is bounded by other lines than the
+                 * polygon's: its loops touch or overlap there */
+                const double *q = &m->vxy[2 * m->tri[3 * e + k]];
+                st = SQ_FAIL(err, SQ_ERR_GEOMETRY,
+                             "the face's loops touch or overlap near (%.6g, %.6g): the "
+                             "triangulation's boundary there is no boundary segment",
+                             q[0], q[1]);
                 goto done;
             }
             m->btag[3 * e + k] = p->edge[i];
@@ -594,6 +642,7 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
         sq_triangulation_free(out);
         bdisc_sort(&b);
         if ((st = bpoly_build(face, &b, &p, err)) != SQ_OK) break;
+        if ((st = untangle(face, opt, &p, &b, err)) != SQ_OK) break;
         if ((st = cdt_round(face, opt, &sc, &p, &b, &o, &nsplit, err)) != SQ_OK) break;
         if (nsplit) continue;
         if ((st = build_mesh(face, opt, &p, &o, &b, out, &nbad, err)) != SQ_OK) break;

@@ -4,6 +4,8 @@
  *  1. discretize each boundary edge, equidistributing
  *     rho(s) = 1/size + |curvature(s)|/max_turn (every segment turns by at
  *     most max_turn, and is at most `size` long), points exactly on the curve;
+ *     chords that cross (loops closer than a chord's sagitta: a near-tangent
+ *     hole) are halved on their curves until none do (cad_segments_crossing);
  *  2. CGAL constrained Delaunay refinement (min angle, size, graded size
  *     around the extra points) of that polygon;
  *  3. where the refinement split a boundary segment, put the split point on

@@ -19,10 +19,8 @@ so a regression there fails the test even though the split road would mesh
 the face.  A listed face whose layout road starts meshing is reported, so
 that the list only shrinks.
 
-Issue 14 is open: KNOWN_FAILING lists the faces not answered as their class
-must be yet.  For them the test asserts what must already hold for every
-input: an answer within FACE_TIMEOUT and no signal.  0053_holes is left out:
-its layout repairs run past 120 s (bench/stress_bench.py times it).
+0053_holes is left out: its layout repairs run past 120 s (bench/stress_bench.py
+times it).
 usage: t701-stress-corpus.py SEMQUAD STRESS_CORPUS_PY"""
 import json
 import os
@@ -57,13 +55,7 @@ LAYOUT_GIVES_WAY = {
     37: "layout: a 3-corner patch left",
     48: "layout: a T-junction left",
     18: "separatrix starts: no direction at a 135-degree corner next to a tiny edge (exit 1)",
-    8: "triangulation: near-tangent hole's chords cross",
-    56: "triangulation: near-tangent hole's chords cross",
-}
-# invalid faces not refused yet (the split road meshes them)
-KNOWN_FAILING = {
-    15: "reader: overlapping holes not refused",
-    31: "reader: self-crossing outline not refused",
+    8: "relaxation: quads with a non-positive Jacobian (near-tangent hole)",
 }
 # a face that hangs fails the test instead of the whole suite waiting for it
 FACE_TIMEOUT = 120
@@ -80,12 +72,11 @@ def check(e, tmp):
         p = subprocess.run([sq, "mesh", path, "-q", "-o", msh, "--report", rep],
                            capture_output=True, text=True, timeout=FACE_TIMEOUT)
     except subprocess.TimeoutExpired:
-        return ("no answer after %d s" % FACE_TIMEOUT,) * 2 + (None,)
+        return "no answer after %d s" % FACE_TIMEOUT, None
     err = [ln for ln in p.stderr.splitlines() if ln.strip()]
     last = err[-1] if err else ""
-    answer = "killed by signal %d" % -p.returncode if p.returncode < 0 else None
     road = json.load(open(rep)).get("road") if p.returncode == 0 else None
-    return outcome(e, p, err, last, msh, rep), answer, road
+    return outcome(e, p, err, last, msh, rep), road
 
 
 def outcome(e, p, err, last, msh, rep):
@@ -118,15 +109,9 @@ def main():
                 print("%s: the generator did not write the face it drew: %s" % (e["file"], e["invalid_reason"]))
                 fails += 1
                 continue
-            why, answer, road = check(e, tmp)
-            known = KNOWN_FAILING.get(e["id"])
-            if why and known:
-                why = answer  # what every answer must be (docstring)
-            elif known:
-                print("%s: answered as its class must be now; take it off KNOWN_FAILING (%s)"
-                      % (e["file"], known))
+            why, road = check(e, tmp)
             gives_way = LAYOUT_GIVES_WAY.get(e["id"])
-            if not why and road == "split" and not gives_way and not known:
+            if not why and road == "split" and not gives_way:
                 why = "meshed by the split road: the layout road fails (a regression)"
             elif not why and road == "layout" and gives_way:
                 print("%s: the layout road meshes it now; take it off LAYOUT_GIVES_WAY (%s)"

@@ -1,0 +1,85 @@
+"""Test helper: a STEP file of one planar face in z = 0 (mm), written as text
+(AP214: lines and circles; no p-curves, the reader makes them), so that tests
+build their own faces without Gmsh."""
+
+
+class Step:
+    """Minimal AP214 writer of one planar face in z = 0 (mm)."""
+
+    def __init__(self):
+        self.ents = []
+
+    @staticmethod
+    def real(x):
+        """A STEP real: a point and an upper-case exponent (the reader takes
+        a lower-case one for the end of the number)."""
+        return "%.17E" % float(x)
+
+    def add(self, s):
+        self.ents.append(s)
+        return "#%d" % len(self.ents)
+
+    def pt(self, x, y):
+        return self.add("CARTESIAN_POINT('',(%s,%s,0.))" % (self.real(x), self.real(y)))
+
+    def dirn(self, x, y, z=0.0):
+        return self.add("DIRECTION('',(%s,%s,%s))" % (self.real(x), self.real(y), self.real(z)))
+
+    def axis(self, x, y):
+        return self.add("AXIS2_PLACEMENT_3D('',%s,%s,%s)" % (self.pt(x, y), self.dirn(0, 0, 1),
+                                                             self.dirn(1, 0)))
+
+    def polygon(self, pts):
+        vs = [self.add("VERTEX_POINT('',%s)" % self.pt(*p)) for p in pts]
+        oes = []
+        for i, p in enumerate(pts):
+            q = pts[(i + 1) % len(pts)]
+            dx, dy = q[0] - p[0], q[1] - p[1]
+            ln = (dx * dx + dy * dy) ** 0.5
+            vec = self.add("VECTOR('',%s,%s)" % (self.dirn(dx / ln, dy / ln), self.real(ln)))
+            line = self.add("LINE('',%s,%s)" % (self.pt(*p), vec))
+            ec = self.add("EDGE_CURVE('',%s,%s,%s,.T.)" % (vs[i], vs[(i + 1) % len(pts)], line))
+            oes.append(self.add("ORIENTED_EDGE('',*,*,%s,.T.)" % ec))
+        return self.add("EDGE_LOOP('',(%s))" % ",".join(oes))
+
+    def circle(self, cx, cy, r):
+        """A clockwise circle (a hole)."""
+        v = self.add("VERTEX_POINT('',%s)" % self.pt(cx + r, cy))
+        c = self.add("CIRCLE('',%s,%s)" % (self.axis(cx, cy), self.real(r)))
+        ec = self.add("EDGE_CURVE('',%s,%s,%s,.T.)" % (v, v, c))
+        return self.add("EDGE_LOOP('',(%s))" % self.add("ORIENTED_EDGE('',*,*,%s,.F.)" % ec))
+
+    def write(self, path, loops):
+        bounds = [self.add("%s('',%s,.T.)" % ("FACE_OUTER_BOUND" if i == 0 else "FACE_BOUND", l))
+                  for i, l in enumerate(loops)]
+        face = self.add("ADVANCED_FACE('',(%s),%s,.T.)" % (",".join(bounds),
+                                                           self.add("PLANE('',%s)" % self.axis(0, 0))))
+        mm = self.add("( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) )")
+        rad = self.add("( NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.) )")
+        sr = self.add("( NAMED_UNIT(*) SI_UNIT($,.STERADIAN.) SOLID_ANGLE_UNIT() )")
+        unc = self.add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07),%s,"
+                       "'distance_accuracy_value','')" % mm)
+        ctx = self.add("( GEOMETRIC_REPRESENTATION_CONTEXT(3) GLOBAL_UNCERTAINTY_ASSIGNED_CONTEXT((%s)) "
+                       "GLOBAL_UNIT_ASSIGNED_CONTEXT((%s,%s,%s)) REPRESENTATION_CONTEXT('',''))"
+                       % (unc, mm, rad, sr))
+        model = self.add("SHELL_BASED_SURFACE_MODEL('',(%s))" % self.add("OPEN_SHELL('',(%s))" % face))
+        app = self.add("APPLICATION_CONTEXT('core data for automotive mechanical design processes')")
+        self.add("APPLICATION_PROTOCOL_DEFINITION('international standard','automotive_design',2000,%s)" % app)
+        prod = self.add("PRODUCT('face','face','',(%s))" % self.add("PRODUCT_CONTEXT('',%s,'mechanical')" % app))
+        pd = self.add("PRODUCT_DEFINITION('design','',%s,%s)" % (
+            self.add("PRODUCT_DEFINITION_FORMATION('','',%s)" % prod),
+            self.add("PRODUCT_DEFINITION_CONTEXT('part definition',%s,'design')" % app)))
+        rep = self.add("MANIFOLD_SURFACE_SHAPE_REPRESENTATION('',(%s,%s),%s)" % (self.axis(0, 0), model, ctx))
+        self.add("SHAPE_DEFINITION_REPRESENTATION(%s,%s)" % (self.add("PRODUCT_DEFINITION_SHAPE('','',%s)" % pd), rep))
+        with open(path, "w") as fh:
+            fh.write("ISO-10303-21;\nHEADER;\nFILE_DESCRIPTION((''),'2;1');\n"
+                     "FILE_NAME('face','',(''),(''),'','','');\n"
+                     "FILE_SCHEMA(('AUTOMOTIVE_DESIGN { 1 0 10303 214 1 1 1 1 }'));\nENDSEC;\nDATA;\n")
+            fh.writelines("#%d = %s;\n" % (i + 1, e) for i, e in enumerate(self.ents))
+            fh.write("ENDSEC;\nEND-ISO-10303-21;\n")
+
+
+def step_face(path, loops):
+    """loops: polygons [(x, y), ...] (the first counter-clockwise) or ('circle', cx, cy, r)."""
+    s = Step()
+    s.write(path, [s.circle(*l[1:]) if l[0] == "circle" else s.polygon(l) for l in loops])
