@@ -50,8 +50,6 @@ KNOWN_FAILING = {
     7: "layout: face vertex with wrong corner count",
     16: "layout: hundreds of non-quad patches",
     37: "layout: a 3-corner patch left",
-    48: "layout: a T-junction left",
-    18: "separatrix starts: no direction at a 135-degree corner next to a tiny edge (exit 1)",
     8: "triangulation: near-tangent hole's chords cross",
     56: "triangulation: near-tangent hole's chords cross",
     15: "reader: overlapping holes not refused (exit 1)",
