@@ -3,8 +3,8 @@
 # test inputs), with the fewest interior irregular vertices their README
 # gives: the aerofoil box (2, valence 5) at the default size — which folds
 # curved quads at the aerofoil's leading edge and is halved by the command —
-# and the circle-square's second face (4).  Skipped (77) where the files
-# are absent.
+# the circle-square's second face (4), and the T106 cascade (4 + 1 kept
+# pair).  Skipped (77) where the files are absent.
 # usage: t614-mesh-real.sh SEMQUAD REAL_DIR
 set -u
 sq=$1
@@ -27,5 +27,16 @@ grep -q '"inverted": *0,' "$tmp/a.json" || fail "aerofoil box: inverted quads"
 [ $? -eq 0 ] || fail "circle-square: exit status not 0: $(cat "$tmp/err")"
 grep -q '"irregular_interior_vertices": *4,' "$tmp/c.json" || fail "circle-square: not 4 irregular"
 grep -q '"inverted": *0,' "$tmp/c.json" || fail "circle-square: inverted quads"
+
+# the T106 cascade (default size): the blade's trailing edge has two
+# valence-5 points 0.004 from its rounded end (once dropped as "on the
+# boundary": exit 6); its Gauss-Bonnet minimum 4 plus the one pair the
+# layout keeps (the report names it: kept_pairs 1)
+"$sq" mesh "$real/real_t106_cascade.step" -q -o "$tmp/t.msh" --report "$tmp/t.json" 2>"$tmp/err"
+[ $? -eq 0 ] || fail "T106: exit status not 0: $(cat "$tmp/err")"
+grep -q '"gauss_bonnet_min": *4,' "$tmp/t.json" || fail "T106: Gauss-Bonnet minimum not 4"
+grep -q '"kept_pairs": *1,' "$tmp/t.json" || fail "T106: not 1 kept pair"
+grep -q '"irregular_interior_vertices": *6,' "$tmp/t.json" || fail "T106: not 6 irregular"
+grep -q '"inverted": *0,' "$tmp/t.json" || fail "T106: inverted quads"
 
 [ "$fails" -eq 0 ]
