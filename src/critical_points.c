@@ -272,13 +272,11 @@ static void read_index(const sq_guiding_field *g, const double c[2], double rho,
 }
 
 sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *face,
-                                  const sq_face_info *info, sq_critical_point **pts, int *npts,
-                                  sq_error *err)
+                                  sq_critical_point **pts, int *npts, sq_error *err)
 {
     const sem_tri_mesh *m = g->mesh;
     const sem_locator *loc = sem_field_evaluator_locator(g->ev);
     int S = 2 * g->order > 8 ? 2 * g->order : 8, n = 0, cap = 8;
-    double diag = hypot(info->bbox[2] - info->bbox[0], info->bbox[3] - info->bbox[1]);
     sq_critical_point *p = malloc(sizeof *p * (size_t)cap);
     if (!p) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     sq_status st = SQ_OK;
@@ -346,7 +344,11 @@ sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *fac
      * enclose a cluster) */
     for (int q = 0; q < n && st == SQ_OK; q++) {
         double c[2] = {p[q].x, p[q].y}, rho = 0.25 * element_size(m, p[q].elem);
-        p[q].near_boundary = p[q].dist_boundary < SQ_NEAR_BOUNDARY_REL * diag;
+        /* Markov's inequality |p'| <= 2 P^2 / h max|p| on an element of size
+         * h: a zero of (u, v) within h / (2 P^2) of the boundary, where
+         * |(u, v)| = 1, is below what the element's polynomial resolves */
+        const double h = element_size(m, p[q].elem);
+        p[q].near_boundary = p[q].dist_boundary < h / (2.0 * g->order * g->order);
         rho = fmin(rho, 0.5 * p[q].dist_boundary);
         for (int o = 0; o < n; o++)
             if (o != q) rho = fmin(rho, 0.4 * hypot(p[o].x - c[0], p[o].y - c[1]));

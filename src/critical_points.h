@@ -39,7 +39,8 @@ typedef struct {
     int index;            /* Poincaré index of (u, v) */
     int valence;          /* 4 - index */
     double dist_boundary; /* distance to the face's boundary */
-    int near_boundary;    /* closer than SQ_NEAR_BOUNDARY_REL * face size */
+    int near_boundary;    /* closer to the boundary than its element resolves
+                             (h / (2 P^2)): index 0, starts no separatrix */
     double residual;      /* |(u, v)| at the point */
     int unresolved;       /* no index circle could be read: index 0 (see above) */
     /* |index| > 1 (a degenerate zero): c of u + iv ≈ c (z − z0)^index, or
@@ -48,13 +49,8 @@ typedef struct {
     double coef[2];
 } sq_critical_point;
 
-/* Relative distance (to the face's bounding-box diagonal) under which a
- * critical point is flagged as lying on the boundary. */
-#define SQ_NEAR_BOUNDARY_REL 1e-3
-
 sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *face,
-                                  const sq_face_info *info, sq_critical_point **pts, int *npts,
-                                  sq_error *err);
+                                  sq_critical_point **pts, int *npts, sq_error *err);
 
 /* Winding number of (u, v) on the circle of radius rho around c, sampled
  * adaptively; SQ_ERR_INTERNAL if part of the circle leaves the domain. */

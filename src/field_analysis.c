@@ -52,6 +52,39 @@ sq_status sq_singular_vertices(const cad_face *face, const sq_face_info *info, d
     return SQ_OK;
 }
 
+/* A zero closer to a corner than this fraction of the field's element size
+ * (the mesh's quad size by default) is the corner's: no ring of quads fits
+ * between them. */
+#define CORNER_ZERO_REL 0.1
+/* ... when the corner's angle is this far from n × 90° (in units of 90°;
+ * 0.5 is the rounding limit): its index is then split between the corner
+ * and a zero beside it. */
+#define CORNER_ZERO_MISFIT 0.25
+
+/* Zeros beside a corner of ambiguous valence (a vertex next to a tiny edge:
+ * 132.7° next to a 0.0035 edge has a valence-5 zero 0.002 away) are left to
+ * the corner, flagged on the boundary (index 0, no separatrix), as every
+ * zero within 1e-3 of the face's size used to be: traced, such a point's
+ * separatrices run along the edges at its distance and give patches
+ * thinner than a quad.  Zeros beside a rounded edge (a blade's trailing
+ * edge) or a corner near n × 90° (an aerofoil's nose) are kept. */
+static void corner_zeros(sq_field_analysis *a, double size)
+{
+    for (int q = 0; q < a->npoints; q++) {
+        sq_critical_point *p = &a->points[q];
+        for (int k = 0; k < a->info.nvertices && !p->near_boundary; k++) {
+            const sq_vertex *v = &a->info.vertices[k];
+            const sq_corner_valence *c = &a->corners[k];
+            if (v->smooth || fabs(c->angle_deg / 90.0 - c->valence) <= CORNER_ZERO_MISFIT ||
+                hypot(v->x - p->x, v->y - p->y) >= CORNER_ZERO_REL * size)
+                continue;
+            p->index = 0;
+            p->valence = 4;
+            p->near_boundary = 1;
+        }
+    }
+}
+
 void sq_field_analysis_free(sq_field_analysis *a)
 {
     if (!a) return;
@@ -87,9 +120,9 @@ sq_status sq_field_analyse(const cad_face *face, const sq_field_options *opt,
                                     &out->field, err);
     double t2 = sq_now();
     if (st == SQ_OK)
-        st = sq_critical_points_find(&out->field, face, &out->info, &out->points, &out->npoints,
-                                     err);
+        st = sq_critical_points_find(&out->field, face, &out->points, &out->npoints, err);
     if (st == SQ_OK) st = sq_corner_valences(&out->field, face, &out->info, &out->corners, err);
+    if (st == SQ_OK) corner_zeros(out, tri.size);
     double t3 = sq_now();
     if (st != SQ_OK) {
         sq_field_analysis_free(out);

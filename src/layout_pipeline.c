@@ -211,12 +211,15 @@ static sq_status two_step(const cad_face *face, const sq_layout_options *opt,
      * fewest points (pats[2] has no more than pats[1]) */
     sq_error e = {0};
     int valid1 = attempt(face, opt, &pats[1], 1, out, &e) == SQ_OK;
+    /* st may hold the guiding field's failure: a valid H/θ layout clears it */
     if (valid1 && pats[1].npoints == pats[2].npoints) {
         rep->pattern = 1;
+        st = SQ_OK;
         goto done;
     }
     if (pats[2].npoints < pats[1].npoints && attempt(face, opt, &pats[2], 1, out, &e) == SQ_OK) {
         rep->pattern = 2;
+        st = SQ_OK;
         goto done;
     }
     if (valid1) {

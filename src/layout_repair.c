@@ -21,7 +21,24 @@ typedef struct {
     lay_hit *hit;  /* the set's crossings (crossings()), nhit of them, */
     int nhit, hit_ok; /* valid while hit_ok: the set has not changed */
     int trials;    /* patch repairs tried (try_candidate), up to MAX_TRIALS */
+    double work;   /* separatrix points the set-level passes visited (WORK_MAX) */
 } rctx;
+
+/* The repairs' work bound, in separatrix points visited by the set-level
+ * passes (each finds every crossing of the set again): about 10 s of one
+ * core for the densest sets (1.5e-5 s a point at 10^4 crossings); the
+ * examples' layouts take less than 2.4e5 (T106), 0.02 to 1 s.  (A repair
+ * line's steps have their own bound.)  A bound on the work, not on the
+ * clock, keeps the answer the same on every machine. */
+#define WORK_MAX 1e6
+
+/* Points of the set. */
+static long set_points(const sq_separatrix_set *S)
+{
+    long n = 0;
+    for (int i = 0; i < S->n; i++) n += S->s[i].npts;
+    return n;
+}
 
 /* The crossings of the separatrix set, found once per state of the set
  * (the repairs tried in turn on an unchanged set share them). */
@@ -362,12 +379,14 @@ static sq_status remove_duplicate(rctx *r, int *done, sq_error *err)
             int same = (same_end(&A->start, &B->start, tol) && same_end(&A->end, &B->end, tol)) ||
                        (same_end(&A->start, &B->end, tol) && same_end(&A->end, &B->start, tol));
             if (!same) continue;
+            /* stop at the first point farther than `close` (most pairs
+             * with the same ends are not duplicates) */
             double worst = 0.0, d;
-            for (int j = 0; j < A->npts; j++) {
+            for (int j = 0; j < A->npts && worst <= close; j++) {
                 nearest_pos(B, &A->xy[2 * j], &d);
                 worst = fmax(worst, d);
             }
-            for (int j = 0; j < B->npts; j++) {
+            for (int j = 0; j < B->npts && worst <= close; j++) {
                 nearest_pos(A, &B->xy[2 * j], &d);
                 worst = fmax(worst, d);
             }
@@ -425,18 +444,19 @@ static sq_status cut_limit_cycle(rctx *r, int *done, sq_error *err)
     const int nh = r->nhit;
     sq_status st = SQ_OK;
     int n = L->seps.n;
+    /* seen[o] == k + 1: k already crosses o (one pass over the crossings
+     * per separatrix, not one per pair of them: faces with many holes have
+     * 10^4 crossings before the repairs) */
+    int *seen = calloc((size_t)n + 1, sizeof *seen);
+    if (!seen) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     for (int k = 0; k < n && !*done && st == SQ_OK; k++) {
         const sq_separatrix *s = &L->seps.s[k];
         int lc = s->end.kind == SQ_END_OPEN;
         for (int a = 0; a < nh && !lc; a++) {
-            if (h[a].enda >= 0 || h[a].endb >= 0) continue;
-            if (h[a].a == k && h[a].b == k) lc = 1;
-            for (int b = a + 1; b < nh && !lc; b++) {
-                if (h[b].enda >= 0 || h[b].endb >= 0) continue;
-                int pa = (h[a].a == k) ? h[a].b : (h[a].b == k ? h[a].a : -2);
-                int pb = (h[b].a == k) ? h[b].b : (h[b].b == k ? h[b].a : -2);
-                if (pa >= 0 && pa == pb) lc = 1;
-            }
+            if (h[a].enda >= 0 || h[a].endb >= 0 || (h[a].a != k && h[a].b != k)) continue;
+            int o = h[a].a == k ? h[a].b : h[a].a;
+            lc = o == k || seen[o] == k + 1;
+            seen[o] = k + 1;
         }
         if (!lc) continue;
         /* the cut: first crossing along k with |cos| < 0.5, else the most
@@ -480,6 +500,7 @@ static sq_status cut_limit_cycle(rctx *r, int *done, sq_error *err)
         L->stats.limit_cycles_cut++;
         *done = 1;
     }
+    free(seen);
     return st;
 }
 
@@ -1399,6 +1420,7 @@ static sq_status set_repair(rctx *r, int *done, sq_error *err)
 {
     *done = 0;
     r->hit_ok = 0;
+    r->work += (double)set_points(&r->L->seps);
     SQ_TRY(remove_duplicate(r, done, err));
     if (!*done) SQ_TRY(make_tjunction(r, done, err));
     if (!*done) SQ_TRY(cut_limit_cycle(r, done, err));
@@ -1415,7 +1437,7 @@ static sq_status settle(rctx *r, int *ndef, sq_error *err)
 {
     int done = 1, it = 0;
     *ndef = INT_MAX;
-    while (done && it++ < SETTLE_MAX) SQ_TRY(set_repair(r, &done, err));
+    while (done && it++ < SETTLE_MAX && r->work <= WORK_MAX) SQ_TRY(set_repair(r, &done, err));
     if (done) return SQ_OK;
     SQ_TRY(lay_graph_build(r->L, r->face, r->info, err));
     sq_layout_defects d;
@@ -1511,7 +1533,7 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
     sq_layout_defects d;
     memset(&d, 0, sizeof d);
     int it;
-    for (it = 0; it < 400 && st == SQ_OK; it++) {
+    for (it = 0; it < 400 && st == SQ_OK && r.work <= WORK_MAX; it++) {
         /* set-level repairs first, the graph rebuilt after them; each
          * iteration follows a change of the set */
         int done = 0;
@@ -1551,7 +1573,8 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
         if (sq_layout_check(L, &d) > 0 && st == SQ_OK) {
             char buf[400];
             sq_layout_defects_summary(&d, buf, sizeof buf);
-            st = SQ_FAIL(err, SQ_ERR_LAYOUT, "%s", buf);
+            st = SQ_FAIL(err, SQ_ERR_LAYOUT, "%s%s", buf,
+                         r.work > WORK_MAX ? " (repairs stopped at their work bound)" : "");
         }
     } else if (st != SQ_ERR_LAYOUT) {
         sq_layout_free(L);

@@ -311,6 +311,25 @@ static double max_turning(const double *xy, int n, int skip)
  * kink: the two lines were not one separatrix (radians, 10 degrees). */
 #define MERGE_MAX_TURN 0.17453292519943295
 
+/* Does a blended line leave the face?  Lines running on either side of a
+ * hole thinner than the meeting radius (a slot, a blade's rounded edge)
+ * pass the meeting test but are not one separatrix: their blend cuts
+ * across the hole.  Its inner points and the midpoints of its inner
+ * segments are located in the field's triangulation (the ends may lie on
+ * the boundary). */
+static int leaves_face(const sq_tracer *tr, const double *xy, int n)
+{
+    int elem = -1;
+    double th;
+    for (int i = 1; i + 1 < n; i++) {
+        const double *p = &xy[2 * i], mid[2] = {0.5 * (p[0] + p[2]), 0.5 * (p[1] + p[3])};
+        double len = hypot(p[2] - p[0], p[3] - p[1]);
+        if (sq_trace_eval(tr->field, p, len, &elem, &th)) return 1;
+        if (i + 2 < n && sq_trace_eval(tr->field, mid, len, &elem, &th)) return 1;
+    }
+    return 0;
+}
+
 static sq_status walker_copy(const sq_walker *w, sq_walker *c, sq_error *err)
 {
     *c = *w;
@@ -342,8 +361,11 @@ static sq_status merge(sq_tracer *tr, sq_walker *a, sq_walker *b, sq_separatrix 
     st = reach(tr, &ca, &b->start, b->start_xy, budget, accept, &oka, err);
     if (st == SQ_OK && oka) st = reach(tr, &cb, &a->start, a->start_xy, budget, accept, &okb, err);
     if (st == SQ_OK && oka && okb) st = blend(ca.xy, ca.npts, cb.xy, cb.npts, out, err);
-    if (st == SQ_OK && oka && okb && max_turning(out->xy, out->npts, 2) > MERGE_MAX_TURN) {
-        free(out->xy); /* a kink: refuse (Marcon's blend must stay smooth) */
+    if (st == SQ_OK && oka && okb &&
+        (max_turning(out->xy, out->npts, 2) > MERGE_MAX_TURN ||
+         leaves_face(tr, out->xy, out->npts))) {
+        free(out->xy); /* a kink or a short cut across a hole: refuse
+                          (Marcon's blend must stay smooth and in the face) */
         memset(out, 0, sizeof *out);
         oka = 0;
     }

@@ -4,9 +4,9 @@
 # gives: the aerofoil box (2, valence 5) at the default size, at that size
 # itself (its curved quads folded at the leading edge, and the size was
 # halved, while a boundary side covering half its CAD edge or more had its
-# nodes placed the other way round the curve) — and the circle-square's
-# second face (4).  Skipped (77) where the files
-# are absent.
+# nodes placed the other way round the curve), the circle-square's second
+# face (4), and the T106 cascade (4 + 1 kept pair).  Skipped (77) where the
+# files are absent.
 # usage: t614-mesh-real.sh SEMQUAD REAL_DIR
 set -u
 sq=$1
@@ -29,5 +29,16 @@ grep -q '"inverted": *0,' "$tmp/a.json" || fail "aerofoil box: inverted quads"
 [ $? -eq 0 ] || fail "circle-square: exit status not 0: $(cat "$tmp/err")"
 grep -q '"irregular_interior_vertices": *4,' "$tmp/c.json" || fail "circle-square: not 4 irregular"
 grep -q '"inverted": *0,' "$tmp/c.json" || fail "circle-square: inverted quads"
+
+# the T106 cascade (default size): the blade's trailing edge has two
+# valence-5 points 0.004 from its rounded end (once dropped as "on the
+# boundary": exit 6); its Gauss-Bonnet minimum 4 plus the one pair the
+# layout keeps (the report names it: kept_pairs 1)
+"$sq" mesh "$real/real_t106_cascade.step" -q -o "$tmp/t.msh" --report "$tmp/t.json" 2>"$tmp/err"
+[ $? -eq 0 ] || fail "T106: exit status not 0: $(cat "$tmp/err")"
+grep -q '"gauss_bonnet_min": *4,' "$tmp/t.json" || fail "T106: Gauss-Bonnet minimum not 4"
+grep -q '"kept_pairs": *1,' "$tmp/t.json" || fail "T106: not 1 kept pair"
+grep -q '"irregular_interior_vertices": *6,' "$tmp/t.json" || fail "T106: not 6 irregular"
+grep -q '"inverted": *0,' "$tmp/t.json" || fail "T106: inverted quads"
 
 [ "$fails" -eq 0 ]
