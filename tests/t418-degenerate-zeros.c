@@ -68,7 +68,7 @@ static int run(const char *path, const char *name, const expect *want)
     sq_layout_result r;
     sq_status st = sq_layout_run(f, &lo, &r, &err);
     int fails = sq_check_int(name, "status", st, want->status);
-    if (st != want->status) printf("%s: %s\n", name, err.msg);
+    if ((int)st != want->status) printf("%s: %s\n", name, err.msg);
     if (want->status == SQ_OK && st == SQ_OK) {
         fails += sq_check_int(name, "valid", r.valid, 1);
         fails += sq_check_int(name, "singular points", r.nsing, want->nsing);
