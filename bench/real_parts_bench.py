@@ -69,7 +69,9 @@ gmsh.initialize(["gmsh", "-v", "0"]); gmsh.option.setNumber("General.Terminal", 
 gmsh.option.setNumber("General.NumThreads", 1)
 if unit:  # Gmsh converts STEP/IGES to mm unless told the unit to keep; semquad keeps the file's
     gmsh.option.setString("Geometry.OCCTargetUnit", unit.upper())
-ents = gmsh.model.occ.importShapes(path); gmsh.model.occ.synchronize()
+# every dimension, as semquad lists them: the default keeps only the highest (a free face
+# beside a solid, NIST CTC 02's face 663, would be missed and the indices would not match)
+ents = gmsh.model.occ.importShapes(path, highestDimOnly=False); gmsh.model.occ.synchronize()
 surfs = gmsh.model.getEntities(2)
 for idx, area, h in faces:
     out = {"face": idx}
