@@ -10,27 +10,27 @@ double sq_split_default_size(const sq_face_info *info) { return sqrt(fabs(info->
 
 /* Design 1.  With the angle bound, about area / size^2 vertices are
  * expected: four times that (and a floor for the boundary's own points)
- * before the bound is dropped, so a sliver does not run CGAL to the
- * quad budget first. */
+ * before the bound is lowered, so a sliver does not run CGAL to the quad
+ * budget first.  The bounds tried: 20 degrees, then 5 (a needle or a thin
+ * part resolved with fewer, flatter triangles), then none. */
 static sq_status triangulate(const cad_face *face, const sq_face_info *info, double size,
                              double max_quads, sq_triangulation *tri, sq_error *err)
 {
+    static const double min_angle[] = {20.0, 5.0, 0.0};
     sq_tri_options to;
     sq_tri_options_default(&to);
     to.order = 1;
     to.size = SQ_SPLIT_TRI_SIZE * size;
     double budget = max_quads > 0.0 ? max_quads / 6.0 : 2e7;
     double expected = 4.0 * fabs(info->area) / (to.size * to.size) + SQ_TRI_MAX_VERTICES;
-    to.max_vertices = (int)fmin(fmin(budget, expected), 2e7) + 3;
-    sq_error first;
-    sq_status st = sq_triangulate(face, &to, tri, &first);
-    if (st != SQ_ERR_GEOMETRY) {
-        if (st != SQ_OK) *err = first;
-        return st;
+    sq_status st = SQ_OK;
+    for (int k = 0; k < 3; k++) {
+        to.min_angle_deg = min_angle[k];
+        to.max_vertices = (int)fmin(k < 2 ? fmin(budget, expected) : budget, 2e7) + 3;
+        st = sq_triangulate(face, &to, tri, err);
+        if (st != SQ_ERR_GEOMETRY) break;
     }
-    to.min_angle_deg = 0.0;
-    to.max_vertices = (int)fmin(budget, 2e7) + 3;
-    return sq_triangulate(face, &to, tri, err);
+    return st;
 }
 
 /* Arc length halfway along boundary edge k of triangle e (bs from

@@ -83,6 +83,9 @@ grep -q "is a cusp" "$tmp/err" || fail "cusp: not named: $(cat "$tmp/err")"
 [ ! -e "$tmp/c.msh" ] || fail "cusp: output file left behind"
 expect parallelogram 0 30 "$sq" field "$tmp/parallelogram.step"
 expect needle 0 30 "$sq" field "$tmp/needle.step"
+# the whole command on the needle: a valid mesh (either road) in bounded time
+expect needle-mesh 0 $((120 * slow)) "$sq" mesh "$tmp/needle.step" -q -o "$tmp/n.msh" --report "$tmp/n.json"
+grep -q '"inverted": *0,' "$tmp/n.json" || fail "needle: inverted quads"
 expect poly500 0 30 "$sq" triangulate "$tmp/poly500.step" --order 8
 expect max-quads 2 30 "$sq" mesh "$ex/square.step" --size 0.01 --max-quads 1000 -q -o "$tmp/q.msh"
 grep -q "a size of 0.0316 or more fits" "$tmp/err" || fail "max-quads: no fitting size: $(cat "$tmp/err")"
