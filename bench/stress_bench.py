@@ -66,7 +66,9 @@ def run_all(corpus, faces, semquad, timeout, jobs):
             rows.append(r)
             print("%-28s %-6s %7.2fs  %s" % (r["file"], r["exit"], r["seconds"],
                                              r["outcome"] if r["outcome"] != "ok" else
-                                             "ok quads=%s irr=%s sj=%.3f" % (r.get("quads"), r.get("irregular"), r["min_sj"])),
+                                             "ok refused" if r["exit"] != 0 else
+                                             "ok %s quads=%s irr=%s sj=%.3f" % (r.get("road"), r.get("quads"),
+                                                                                r.get("irregular"), r["min_sj"])),
                   file=sys.stderr, flush=True)
     os.rmdir(work)
     return rows
