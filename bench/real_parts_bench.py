@@ -289,9 +289,9 @@ def main():
                 "their sources), each meshed alone (`semquad mesh FILE --face N`) at the default size.\n\n"
                 "`/usr/bin/python3 bench/real_parts_bench.py PARTS --max-faces %d%s --doc docs/benchmarks.md` "
                 "with those files in PARTS (semquad built from commit %s, `build/` (debugoptimized), %s UTC, "
-                "shared 2-core machine under load from other builds, 2 faces at a time).\n\n"
+                "shared 2-core machine under load, %d face(s) at a time).\n\n"
                 % (args.max_faces, " --gmsh" if any("gmsh" in r for r in rows) else "", rev,
-                   datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M")))
+                   datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M"), args.jobs))
         benchlib.replace_section(args.doc, "Planar faces of real parts", head + md)
 
 

@@ -167,9 +167,9 @@ def main():
                 "`/usr/bin/python3 bench/stress_corpus.py CORPUS --seed %d --count %d` then "
                 "`/usr/bin/python3 bench/stress_bench.py CORPUS --doc docs/benchmarks.md` "
                 "(semquad built from commit %s, `build/` (debugoptimized), %s UTC, shared 2-core machine "
-                "under load from other builds, 2 faces at a time).\n\n"
+                "under load, %d face(s) at a time).\n\n"
                 % (len(m["faces"]), len(m["classes"]), m["seed"], len(m["faces"]), rev,
-                   datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M")))
+                   datetime.datetime.utcnow().strftime("%Y-%m-%d %H:%M"), a.jobs))
         benchlib.replace_section(a.doc, "Stress corpus", head + md)
 
 
