@@ -73,6 +73,27 @@ static void bbox_add(double bb[4], const double p[2])
     if (p[1] > bb[3]) bb[3] = p[1];
 }
 
+/* Tangents turning by +-180 degrees (two edges tangent at their vertex,
+ * going back the way they came) leave the interior angle 0 (a horn of the
+ * face: the edges' curvatures part them on the face's side) or 360 (a horn
+ * of the outside): the sign of atan2 at +-pi is round-off.  Decided by the
+ * chords to points a little way along both edges, whose angle seen from
+ * the face (counter-clockwise from the outgoing to the incoming one) is
+ * below or above 180 degrees. */
+static sq_status cusp_side(const cad_face *face, int ein, int eout, const double v[2], double turn,
+                           double *angle_deg, sq_error *err)
+{
+    double Lin = cad_face_edge_length(face, ein), Lout = cad_face_edge_length(face, eout);
+    double d = 1e-3 * fmin(Lin, Lout), a[2], b[2];
+    SQ_TRY(cad_face_edge_eval(face, ein, Lin - d, a, NULL, NULL, err));
+    SQ_TRY(cad_face_edge_eval(face, eout, d, b, NULL, NULL, err));
+    double ax = a[0] - v[0], ay = a[1] - v[1], bx = b[0] - v[0], by = b[1] - v[1];
+    int horn = bx * ay - by * ax > 0.0; /* a within 180 degrees counter-clockwise of b */
+    double t = fabs(turn) * 180.0 / M_PI;
+    *angle_deg = horn ? 180.0 - t : 180.0 + t;
+    return SQ_OK;
+}
+
 sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_error *err)
 {
     memset(info, 0, sizeof *info);
@@ -122,6 +143,8 @@ sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_erro
             v->x = p[0];
             v->y = p[1];
             v->angle_deg = 180.0 - turn * 180.0 / M_PI;
+            if (180.0 - fabs(turn) * 180.0 / M_PI < SQ_CUSP_TOL_DEG)
+                st = cusp_side(face, ein, eout, p, turn, &v->angle_deg, err);
             v->loop = l;
             v->edge_in = ein;
             v->edge_out = eout;

@@ -78,6 +78,10 @@ print("" if ok else "report: road %s, min scaled Jacobian %s, %s inverted" % (
     d["road"], m["min_scaled_jacobian"], m["inverted"]))
 sys.exit(0 if ok else 1)
 PY
+# both faces of the cut have two horns each (0 deg, never 360: the side of
+# a +-180-degree turning is read from the edges themselves, not atan2's sign)
+[ "$("$sq" info "$tmp/cusp.step" | grep -c ': 0.0000 deg')" -eq 4 ] ||
+    fail "cusp: not 4 corners of 0 deg: $("$sq" info "$tmp/cusp.step")"
 expect cusp 6 30 "$sq" mesh "$tmp/cusp.step" -q -o "$tmp/c.msh"
 grep -q "is a cusp" "$tmp/err" || fail "cusp: not named: $(cat "$tmp/err")"
 [ ! -e "$tmp/c.msh" ] || fail "cusp: output file left behind"
