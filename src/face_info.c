@@ -162,9 +162,10 @@ sq_status sq_face_check_cusps(const sq_face_info *info, sq_error *err)
         if (info->vertices[k].angle_deg < SQ_CUSP_TOL_DEG)
             return SQ_FAIL(err, SQ_ERR_LAYOUT,
                            "no all-quad mesh with positive Jacobians: the corner at (%.10g, %.10g) "
-                           "is a cusp (interior angle %.2g deg: its two edges are tangent), and a "
-                           "quad's corner there has a zero angle",
-                           info->vertices[k].x, info->vertices[k].y, info->vertices[k].angle_deg);
+                           "is a cusp (interior angle %.2g deg, below %g: its two edges are tangent "
+                           "or nearly so), and a quad's corner there has a zero angle",
+                           info->vertices[k].x, info->vertices[k].y, info->vertices[k].angle_deg,
+                           SQ_CUSP_TOL_DEG);
     return SQ_OK;
 }
 
