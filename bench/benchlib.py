@@ -101,14 +101,9 @@ def road_lines(ok, name_of, examples=3):
     out = ["Meshed by the layout road: %d; by the split road (the fallback: a triangulation "
            "split into quads, many irregular vertices): %d." % (len(ok) - len(split), len(split))]
     if split:
-        groups = {}
-        for r in split:
-            groups.setdefault(blank(r.get("road_reason", "")), []).append(r)
-        out += ["", "Why the layout road gave way:", "", "| layout road's failure | faces | examples |",
-                "|---|---|---|"]
-        for c, rs in sorted(groups.items(), key=lambda kv: (-len(kv[1]), kv[0])):
-            ex = ", ".join("`%s`" % name_of(r) for r in rs[:examples])
-            out.append("| %s | %d | %s |" % (c.replace("|", "/"), len(rs), ex))
+        out += ["", "Why the layout road gave way:", ""]
+        out += group_table(split, lambda r: blank(r.get("road_reason", "")), "layout road's failure",
+                           name_of, examples)
     return out
 
 
@@ -128,17 +123,22 @@ def time_row(rows):
                                                    percentile(ts, 0.99), max(ts) if ts else float("nan"))
 
 
-def failure_table(rows, name_of, examples=3):
-    """Markdown table of the failure classes, most frequent first, with examples."""
+def group_table(rows, class_of, title, name_of, examples=3):
+    """Markdown table of rows grouped by class_of(row), most frequent first, with examples."""
     groups = {}
     for r in rows:
-        c = r["outcome"]
-        if c != "ok":
-            groups.setdefault(c, []).append(r)
-    out = ["| failure class | faces | examples |", "|---|---|---|"]
+        groups.setdefault(class_of(r), []).append(r)
+    out = ["| %s | faces | examples |" % title, "|---|---|---|"]
     for c, rs in sorted(groups.items(), key=lambda kv: (-len(kv[1]), kv[0])):
         ex = ", ".join("`%s`" % name_of(r) for r in rs[:examples])
         out.append("| %s | %d | %s |" % (c.replace("|", "/"), len(rs), ex))
+    return out
+
+
+def failure_table(rows, name_of, examples=3):
+    """Markdown table of the failure classes, most frequent first, with examples."""
+    out = group_table([r for r in rows if r["outcome"] != "ok"], lambda r: r["outcome"],
+                      "failure class", name_of, examples)
     if len(out) == 2:
         out.append("| (none) | 0 | |")
     return out

@@ -142,8 +142,8 @@ static sq_status layout_road(const cad_face *f, const sq_layout_options *lo, sq_
         mo->field = &cf;
     }
     layout_ctx c = {f, r};
-    st = mesh_halving(mesh_by_layout, &c, *mo, sq_mesher_default_size(&r->layout), size_given, quiet,
-                      m, q, err);
+    st = mesh_halving(mesh_by_layout, &c, *mo, sq_mesher_default_size(r->layout.face_area),
+                      size_given, quiet, m, q, err);
     mo->field = NULL;
     t->mesh = sq_now() - t1;
     return st;
@@ -154,8 +154,8 @@ static sq_status split_road(const cad_face *f, const sq_face_info *fi, const sq_
                             sq_error *err)
 {
     split_ctx c = {f, fi};
-    return mesh_halving(mesh_by_split, &c, *mo, sq_split_default_size(fi), size_given, quiet, m, q,
-                        err);
+    return mesh_halving(mesh_by_split, &c, *mo, sq_mesher_default_size(fi->area), size_given,
+                        quiet, m, q, err);
 }
 
 sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)

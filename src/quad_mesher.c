@@ -1033,7 +1033,7 @@ sq_status sq_mesh_linear_quads(const cad_face *face, const sq_face_info *info,
     return st;
 }
 
-double sq_mesher_default_size(const sq_layout *L) { return sqrt(L->face_area) / 8.0; }
+double sq_mesher_default_size(double area) { return sqrt(fabs(area)) / 8.0; }
 
 sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const sq_layout *L,
                          const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
@@ -1045,7 +1045,7 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
         if (!is_quad(&L->patches[q]))
             return SQ_FAIL(err, SQ_ERR_LAYOUT, "patch %d is not a quad (%d corners)", q,
                            L->patches[q].ncorners);
-    double size = opt->size > 0.0 ? opt->size : sq_mesher_default_size(L);
+    double size = opt->size > 0.0 ? opt->size : sq_mesher_default_size(L->face_area);
     edge_nodes en = {0};
     patch_grid *grids = calloc((size_t)L->npatches + 1, sizeof *grids);
     en.n = malloc(sizeof(int) * ((size_t)L->nedges + 1));

@@ -54,8 +54,9 @@ typedef struct {
 
 void sq_mesher_options_default(sq_mesher_options *opt);
 
-/* The target size where sq_mesher_options.size is not set: sqrt(area)/8. */
-double sq_mesher_default_size(const sq_layout *L);
+/* The target size where sq_mesher_options.size is not set, on a face of
+ * area `area` (both roads): sqrt(area)/8. */
+double sq_mesher_default_size(double area);
 
 /* Refuse (SQ_ERR_USAGE) a size whose quads, about area / size^2, are more
  * than max_quads, naming the smallest size that fits: a check before any

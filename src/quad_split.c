@@ -6,8 +6,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-double sq_split_default_size(const sq_face_info *info) { return sqrt(fabs(info->area)) / 8.0; }
-
 /* Design 1.  With the angle bound, about area / size^2 vertices are
  * expected: four times that (and a floor for the boundary's own points)
  * before the bound is lowered, so a sliver does not run CGAL to the quad
@@ -133,7 +131,7 @@ sq_status sq_mesh_split(const cad_face *face, const sq_face_info *info,
                         const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
 {
     *out = NULL;
-    double size = opt->size > 0.0 ? opt->size : sq_split_default_size(info);
+    double size = opt->size > 0.0 ? opt->size : sq_mesher_default_size(info->area);
     if (opt->max_quads > 0.0) SQ_TRY(sq_mesher_check_size(info->area, size, opt->max_quads, err));
     sq_triangulation tri;
     SQ_TRY(triangulate(face, info, size, opt->max_quads, &tri, err));

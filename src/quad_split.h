@@ -32,10 +32,6 @@
  * quads, as the layout road. */
 #define SQ_SPLIT_TRI_SIZE 3.0
 
-/* The default target size of the split road: sqrt(area)/8, as the layout
- * road's. */
-double sq_split_default_size(const sq_face_info *info);
-
 /* opt: order, nodes, size (<= 0: the default), max_quads (the quads are
  * three per triangle: SQ_ERR_USAGE beyond it, naming a size that fits). */
 sq_status sq_mesh_split(const cad_face *face, const sq_face_info *info,
