@@ -9,7 +9,7 @@
  * VmHWM after the solve.  Times are wall clock (best of `reps` runs).
  * Prints a Markdown section on stdout; bench/sem_bench runs it on a release
  * build with one BLAS thread and writes it into docs/benchmarks.md. */
-#include "cli.h"
+#include "cad.h"
 #include "field_eval.h"
 #include "poisson.h"
 #include "triangulate.h"
@@ -213,7 +213,7 @@ static void eval_cost(const sem_tri_mesh *mesh, int P, double out[3], long *dofs
 
 int main(int argc, char **argv)
 {
-    /* one thread, as semquad runs (src/main.c): OpenBLAS is its serial
+    /* one thread, as semquad runs (src/cli/main.c): OpenBLAS is its serial
      * build, and CHOLMOD's OpenMP regions run on the calling thread */
     omp_set_max_active_levels(0);
     const char *path = argc > 1 ? argv[1] : "examples/half_disc.step";
@@ -221,9 +221,8 @@ int main(int argc, char **argv)
     sq_error err;
     cad_model *m = NULL;
     cad_face *f = NULL;
-    int face;
-    const char *note;
-    if (sq_cli_open_face(path, -1, NULL, &m, &f, &face, &note, &err))
+    if (cad_model_read(path, &m, &err) ||
+        cad_face_create(m, cad_model_default_face(m, NULL), &f, &err))
         return fprintf(stderr, "sem-bench: %s\n", err.msg), 1;
     const char *base = strrchr(path, '/');
     base = base ? base + 1 : path;

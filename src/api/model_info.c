@@ -1,7 +1,7 @@
-/* semquad info FILE [--face N] [--json] [--no-heal] [--heal-tolerance T] [-q]:
- * what a CAD file holds, every face with its status (ok, healed, not
- * planar, broken: reason); a broken face does not stop the listing. */
-#include "cli.h"
+/* semquad public API: what a CAD file holds (`semquad info`), every face
+ * with its status (ok, healed, not planar, broken: reason); a broken face
+ * does not stop the listing. */
+#include "api_private.h"
 #include "face_info.h"
 #include "json_writer.h"
 
@@ -19,48 +19,50 @@ typedef struct {
     sq_face_info info;
 } face_entry;
 
-static void print_text(const char *path, const cad_model *m, const face_entry *f, int nf)
+static void print_text(FILE *fp, const char *path, const cad_model *m, const face_entry *f,
+                       int nf)
 {
     int total = cad_model_num_faces(m);
-    printf("%s: %d face%s, unit %s\n", path, total, total == 1 ? "" : "s", cad_model_unit(m));
+    fprintf(fp, "%s: %d face%s, unit %s\n", path, total, total == 1 ? "" : "s", cad_model_unit(m));
     for (int k = 0; k < nf; k++) {
-        printf("face %d: %s, %s", f[k].index, f[k].surface, sq_face_status_name(f[k].status));
+        fprintf(fp, "face %d: %s, %s", f[k].index, f[k].surface, sq_face_status_name(f[k].status));
         if (!f[k].face) {
-            if (f[k].status == CAD_FACE_BROKEN) printf(": %s", f[k].reason);
-            printf("\n");
+            if (f[k].status == CAD_FACE_BROKEN) fprintf(fp, ": %s", f[k].reason);
+            fprintf(fp, "\n");
             continue;
         }
         const sq_face_info *in = &f[k].info;
-        printf(", area %.10g, chi %d, bbox [%g, %g] x [%g, %g]\n", in->area, in->chi, in->bbox[0],
+        fprintf(fp, ", area %.10g, chi %d, bbox [%g, %g] x [%g, %g]\n", in->area, in->chi, in->bbox[0],
                in->bbox[2], in->bbox[1], in->bbox[3]);
         cad_heal h;
         for (int r = 0; cad_model_face_heal(m, f[k].index, r, &h) == 0; r++) {
             char line[256];
             sq_heal_text(&h, cad_model_unit(m), line, sizeof line);
-            printf("  healed: %s\n", line);
+            fprintf(fp, "  healed: %s\n", line);
         }
         for (int l = 0; l < in->nloops; l++) {
             int first = cad_face_loop_first_edge(f[k].face, l);
             int n = cad_face_loop_num_edges(f[k].face, l);
-            printf("  loop %d (%s): %d edge%s\n", l, l ? "hole" : "outer", n, n == 1 ? "" : "s");
+            fprintf(fp, "  loop %d (%s): %d edge%s\n", l, l ? "hole" : "outer", n, n == 1 ? "" : "s");
             for (int e = first; e < first + n; e++)
-                printf("    edge %d: %s, length %.10g\n", e,
+                fprintf(fp, "    edge %d: %s, length %.10g\n", e,
                        cad_edge_type_name(cad_face_edge_type(f[k].face, e)),
                        cad_face_edge_length(f[k].face, e));
         }
-        printf("  corners: %d\n", in->ncorners);
+        fprintf(fp, "  corners: %d\n", in->ncorners);
         for (int v = 0; v < in->nvertices; v++) {
             const sq_vertex *x = &in->vertices[v];
-            printf("    (%.10g, %.10g) loop %d: %s%.4f deg\n", x->x, x->y, x->loop,
+            fprintf(fp, "    (%.10g, %.10g) loop %d: %s%.4f deg\n", x->x, x->y, x->loop,
                    x->smooth ? "smooth junction, " : "", x->angle_deg);
         }
     }
 }
 
-static void print_json(const char *path, const cad_model *m, const face_entry *f, int nf)
+static void print_json(FILE *fp, const char *path, const cad_model *m, const face_entry *f,
+                       int nf)
 {
     sq_json j;
-    sq_json_init(&j, stdout);
+    sq_json_init(&j, fp);
     sq_json_begin_object(&j);
     sq_json_key(&j, "input");
     sq_json_string(&j, path);
@@ -160,44 +162,27 @@ static sq_status open_entry(const cad_model *m, face_entry *f, sq_error *err)
 }
 
 /* One line on stderr: how many faces healing touched and how many are broken. */
-static void summary(const cad_model *m, const face_entry *f, int nf)
+static void summary(const sq_model *model, const face_entry *f, int nf)
 {
+    const cad_model *m = model->cad;
     int healed = 0, broken = 0;
     for (int k = 0; k < nf; k++) {
         healed += f[k].status == CAD_FACE_HEALED;
         broken += f[k].status == CAD_FACE_BROKEN;
     }
     if (healed || broken)
-        fprintf(stderr, "semquad: %d face%s healed within %.3g %s, %d broken\n", healed,
+        sq_api_log(&model->opt, SQ_LOG_NOTE, "%d face%s healed within %.3g %s, %d broken", healed,
                 healed == 1 ? "" : "s", cad_model_heal_tolerance(m), cad_model_unit(m), broken);
 }
 
-sq_status sq_cmd_info(int argc, char **argv, sq_error *err)
+sq_status sq_model_info(const sq_model *model, int face, int json, char **text, sq_error *err)
 {
-    int json = 0;
-    sq_cli_args a;
-    sq_cli_args_init(&a);
-    for (int i = 0; i < argc; i++) {
-        int taken;
-        SQ_TRY(sq_cli_take("info", argc, argv, &i, &a, &taken, err));
-        if (taken) continue;
-        if (!strcmp(argv[i], "--json"))
-            json = 1;
-        else
-            return sq_cli_unknown("info", argv[i], err);
-    }
-    SQ_TRY(sq_cli_need_input("info", &a, err));
-    if (a.output || a.svg || a.report)
-        return SQ_FAIL(err, SQ_ERR_USAGE, "info: writes to standard output only (no -o, --svg, --report)");
-    const char *path = a.input;
-    cad_model *m = NULL;
-    SQ_TRY(cad_model_read_with(path, &a.read, &m, err));
-    int total = cad_model_num_faces(m), face = a.face;
-    if (face >= total) {
-        cad_model_free(&m);
-        return SQ_FAIL(err, SQ_ERR_USAGE, "--face %d: %s has %d face%s", face, path, total,
+    *text = NULL;
+    const cad_model *m = model->cad;
+    int total = cad_model_num_faces(m);
+    if (face >= total)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--face %d: %s has %d face%s", face, model->path, total,
                        total == 1 ? "" : "s");
-    }
     int first = face < 0 ? 0 : face, nf = face < 0 ? total : 1;
     face_entry *f = calloc((size_t)nf, sizeof *f);
     sq_status st = f ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
@@ -205,20 +190,20 @@ sq_status sq_cmd_info(int argc, char **argv, sq_error *err)
         f[k].index = first + k;
         st = open_entry(m, &f[k], err);
     }
+    sq_api_text t;
+    if (st == SQ_OK) st = sq_api_text_open(&t, err);
     if (st == SQ_OK) {
-        if (!a.quiet) summary(m, f, nf);
+        summary(model, f, nf);
         if (json)
-            print_json(path, m, f, nf);
+            print_json(t.fp, model->path, m, f, nf);
         else
-            print_text(path, m, f, nf);
-        if (fflush(stdout) != 0)
-            st = SQ_FAIL(err, SQ_ERR_OUTPUT, "cannot write to standard output");
+            print_text(t.fp, model->path, m, f, nf);
+        st = sq_api_text_close(&t, text, err);
     }
     for (int k = 0; f && k < nf; k++) {
         sq_face_info_free(&f[k].info);
         cad_face_free(&f[k].face);
     }
     free(f);
-    cad_model_free(&m);
     return st;
 }

@@ -1,5 +1,4 @@
 #include "cli.h"
-#include "face_info.h"
 
 #include <errno.h>
 #include <math.h>
@@ -51,19 +50,6 @@ sq_status sq_cli_int_list(const char *opt, const char *val, int lo, int hi, int 
     return SQ_OK;
 }
 
-sq_status sq_cli_method(const char *val, sq_method *out, sq_error *err)
-{
-    if (!strcmp(val, "auto"))
-        *out = SQ_METHOD_AUTO;
-    else if (!strcmp(val, "cg"))
-        *out = SQ_METHOD_CG;
-    else if (!strcmp(val, "dg"))
-        *out = SQ_METHOD_DG;
-    else
-        return SQ_FAIL(err, SQ_ERR_USAGE, "--method expects auto, cg or dg, got '%s'", val);
-    return SQ_OK;
-}
-
 sq_status sq_cli_value(int argc, char **argv, int *i, const char **val, sq_error *err)
 {
     if (*i + 1 >= argc) return SQ_FAIL(err, SQ_ERR_USAGE, "option %s needs a value", argv[*i]);
@@ -75,7 +61,8 @@ void sq_cli_args_init(sq_cli_args *a)
 {
     memset(a, 0, sizeof *a);
     a->face = -1;
-    cad_read_options_default(&a->read);
+    sq_options_init(&a->opt);
+    a->opt.log = sq_cli_log;
 }
 
 sq_status sq_cli_take(const char *cmd, int argc, char **argv, int *i, sq_cli_args *a, int *taken,
@@ -91,16 +78,17 @@ sq_status sq_cli_take(const char *cmd, int argc, char **argv, int *i, sq_cli_arg
         return sq_cli_value(argc, argv, i, &a->output, err);
     if (!strcmp(o, "--svg")) return sq_cli_value(argc, argv, i, &a->svg, err);
     if (!strcmp(o, "--no-heal")) {
-        a->read.heal = 0;
+        a->opt.heal = 0;
         return SQ_OK;
     }
     if (!strcmp(o, "--heal-tolerance")) {
         SQ_TRY(sq_cli_value(argc, argv, i, &val, err));
-        return sq_cli_double(o, val, 1e-300, 1e300, &a->read.heal_tolerance, err);
+        return sq_cli_double(o, val, 1e-300, 1e300, &a->opt.heal_tolerance, err);
     }
     if (!strcmp(o, "--report")) return sq_cli_value(argc, argv, i, &a->report, err);
     if (!strcmp(o, "-q") || !strcmp(o, "--quiet")) {
         a->quiet = 1;
+        a->opt.log = NULL;
         return SQ_OK;
     }
     if (o[0] != '-' || !o[1]) {
@@ -122,39 +110,23 @@ sq_status sq_cli_need_input(const char *cmd, const sq_cli_args *a, sq_error *err
     return a->input ? SQ_OK : SQ_FAIL(err, SQ_ERR_USAGE, "%s: missing input file", cmd);
 }
 
-sq_status sq_cli_open_face(const char *path, int face, const cad_read_options *ro,
-                           cad_model **model, cad_face **cface, int *face_index, const char **note,
-                           sq_error *err)
+void sq_cli_log(void *data, sq_log_level level, const char *line)
 {
-    *note = NULL;
-    cad_read_options def;
-    cad_read_options_default(&def);
-    SQ_TRY(cad_model_read_with(path, ro ? ro : &def, model, err));
-    int n = cad_model_num_faces(*model);
-    if (face < 0) face = cad_model_default_face(*model, note);
-    if (face >= n) {
-        cad_model_free(model);
-        return SQ_FAIL(err, SQ_ERR_USAGE, "--face %d: %s has %d face%s (0..%d)", face, path, n,
-                       n == 1 ? "" : "s", n - 1);
-    }
-    *face_index = face;
-    sq_status st = cad_face_create(*model, face, cface, err);
-    if (st != SQ_OK) cad_model_free(model);
-    return st;
+    (void)data;
+    fprintf(stderr, "semquad: %s%s\n",
+            level == SQ_LOG_NOTE ? "note: " : level == SQ_LOG_WARNING ? "warning: " : "", line);
 }
 
-int sq_cli_heal_note(const cad_model *m, int face, char *buf, size_t n)
+sq_status sq_cli_open(const sq_cli_args *a, sq_model **m, sq_error *err)
 {
-    cad_heal h;
-    buf[0] = '\0';
-    if (cad_model_face_heal(m, face, 0, &h) != 0) return 0;
-    const char *unit = cad_model_unit(m);
-    size_t len = (size_t)snprintf(buf, n, "face %d healed within %.3g %s: ", face,
-                                  cad_model_heal_tolerance(m), unit);
-    for (int k = 0; cad_model_face_heal(m, face, k, &h) == 0 && len < n; k++) {
-        char one[256];
-        sq_heal_text(&h, unit, one, sizeof one);
-        len += (size_t)snprintf(buf + len, n - len, "%s%s", k ? "; " : "", one);
-    }
-    return 1;
+    SQ_TRY(sq_options_check(&a->opt, err));
+    return sq_model_open(a->input, &a->opt, m, err);
+}
+
+sq_status sq_cli_print(sq_status st, char **text)
+{
+    if (*text) fputs(*text, stdout);
+    sq_free(*text);
+    *text = NULL;
+    return st;
 }

@@ -2,17 +2,12 @@
  * codes (../shared/DESIGN.md, "Exit statuses"), print errors as one line. */
 #include "cli.h"
 
-#include <gsl/gsl_errno.h>
 #include <omp.h>
 #include <stdio.h>
 #include <string.h>
 
-#ifndef SQ_VERSION
-#define SQ_VERSION "unknown"
-#endif
-
 static const char *usage =
-    "semquad " SQ_VERSION " - block-structured high-order quad meshes of planar CAD faces\n"
+    " - block-structured high-order quad meshes of planar CAD faces\n"
     "\n"
     "usage: semquad COMMAND [options]\n"
     "\n"
@@ -89,10 +84,6 @@ int main(int argc, char **argv)
 {
     sq_error err;
     sq_error_clear(&err);
-    /* GSL failures must come back as status codes, not abort the program */
-    gsl_set_error_handler_off();
-    /* OpenCASCADE's access violations on hostile files become exceptions */
-    cad_catch_signals();
     /* CHOLMOD's supernodal loops ask OpenMP for 4 threads, a number fixed
      * when it was built (CHOLMOD_OMP_NUM_THREADS), whatever the machine: on
      * small supernodes (the DG guiding field) and 2 cores their barriers
@@ -106,10 +97,11 @@ int main(int argc, char **argv)
     const char *cmd = argv[1];
     sq_status st;
     if (!strcmp(cmd, "help") || !strcmp(cmd, "--help") || !strcmp(cmd, "-h")) {
+        printf("semquad %s", sq_version());
         fputs(usage, stdout);
         return 0;
     } else if (!strcmp(cmd, "--version") || !strcmp(cmd, "version")) {
-        printf("semquad %s\n", SQ_VERSION);
+        printf("semquad %s\n", sq_version());
         return 0;
     } else if (!strcmp(cmd, "info")) {
         st = sq_cmd_info(argc - 2, argv + 2, &err);

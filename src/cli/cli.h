@@ -2,8 +2,7 @@
 #ifndef SQ_CLI_H
 #define SQ_CLI_H
 
-#include "cad.h"
-#include "guiding_field.h"
+#include <semquad.h>
 
 /* Parse a whole-string integer/real option value; SQ_ERR_USAGE naming the
  * option otherwise. */
@@ -14,9 +13,6 @@ sq_status sq_cli_double(const char *opt, const char *val, double lo, double hi, 
 /* Comma-separated integers in lo..hi into out[max]; *n their count. */
 sq_status sq_cli_int_list(const char *opt, const char *val, int lo, int hi, int *out, int max,
                           int *n, sq_error *err);
-
-/* --method value: auto, cg or dg. */
-sq_status sq_cli_method(const char *val, sq_method *out, sq_error *err);
 
 /* Value of option argv[*i] (advances *i); SQ_ERR_USAGE if missing. */
 sq_status sq_cli_value(int argc, char **argv, int *i, const char **val, sq_error *err);
@@ -29,7 +25,8 @@ typedef struct {
     const char *output; /* -o F, --output F */
     const char *svg;    /* --svg F */
     const char *report; /* --report F */
-    cad_read_options read; /* --no-heal, --heal-tolerance T */
+    sq_options opt;     /* --no-heal, --heal-tolerance T; each command's own options;
+                           its logger prints to stderr unless -q */
 } sq_cli_args;
 
 void sq_cli_args_init(sq_cli_args *a);
@@ -45,16 +42,16 @@ sq_status sq_cli_take(const char *cmd, int argc, char **argv, int *i, sq_cli_arg
 sq_status sq_cli_unknown(const char *cmd, const char *opt, sq_error *err);
 sq_status sq_cli_need_input(const char *cmd, const sq_cli_args *a, sq_error *err);
 
-/* Read `path` with options ro (NULL: the defaults) and open face `face`
- * (-1: the default face; *note set when the choice needs saying).  On
- * success the caller frees both. */
-sq_status sq_cli_open_face(const char *path, int face, const cad_read_options *ro,
-                           cad_model **model, cad_face **cface, int *face_index, const char **note,
-                           sq_error *err);
+/* Print a line of the library's messages on stderr ("semquad: note: ..."). */
+void sq_cli_log(void *data, sq_log_level level, const char *line);
 
-/* The healing summary of face `face` in one line ("face 2 healed within
- * 0.0001 mm: closed a ... gap ...; ..."); 0 (buf empty) if it needed none. */
-int sq_cli_heal_note(const cad_model *m, int face, char *buf, size_t n);
+/* Check the options (a usage error before any work), then read a->input. */
+sq_status sq_cli_open(const sq_cli_args *a, sq_model **m, sq_error *err);
+
+/* Print *text (if any) on stdout, free it, return st: the status of the
+ * call that made it (sq_cli_print(sq_x_describe(x, &text, err), &text):
+ * text is read after that call). */
+sq_status sq_cli_print(sq_status st, char **text);
 
 /* Subcommands: return an sq_status, print errors through err. */
 sq_status sq_cmd_info(int argc, char **argv, sq_error *err);

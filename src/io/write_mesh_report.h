@@ -3,6 +3,8 @@
 #ifndef SQ_WRITE_MESH_REPORT_H
 #define SQ_WRITE_MESH_REPORT_H
 
+#include <stdio.h>
+
 #include "cad.h"
 #include "layout_pipeline.h"
 #include "quad_mesh.h"
@@ -19,14 +21,19 @@ typedef struct {
 typedef struct {
     const char *name;
     char reason[512];
-} sq_mesh_road;
+} sq_road_choice;
 
 /* model: the file read, for the face's "healing" key; info: the face; r:
  * the layout road's result (its field and layout keys are written when
  * the road is "layout") */
 sq_status sq_write_mesh_report(const char *path, const char *input, const cad_model *model,
-                               int face, const sq_face_info *info, const sq_mesh_road *road,
+                               int face, const sq_face_info *info, const sq_road_choice *road,
                                const sq_layout_result *r, const sq_quad_mesh *m,
                                const sq_quad_quality *q, const sq_mesh_timings *t, sq_error *err);
+/* The same report on fp (a string, through a memory stream). */
+void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, int face,
+                          const sq_face_info *info, const sq_road_choice *road,
+                          const sq_layout_result *r, const sq_quad_mesh *m,
+                          const sq_quad_quality *q, const sq_mesh_timings *t);
 
 #endif

@@ -6,15 +6,13 @@
 
 #include <string.h>
 
-sq_status sq_write_mesh_report(const char *path, const char *input, const cad_model *model,
-                               int face, const sq_face_info *info, const sq_mesh_road *road,
-                               const sq_layout_result *r, const sq_quad_mesh *m,
-                               const sq_quad_quality *q, const sq_mesh_timings *t, sq_error *err)
+void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, int face,
+                          const sq_face_info *info, const sq_road_choice *road,
+                          const sq_layout_result *r, const sq_quad_mesh *m,
+                          const sq_quad_quality *q, const sq_mesh_timings *t)
 {
-    sq_outfile f;
-    SQ_TRY(sq_outfile_open(path, &f, err));
     sq_json j;
-    sq_json_init(&j, f.fp);
+    sq_json_init(&j, fp);
     sq_json_begin_object(&j);
     int by_layout = !strcmp(road->name, "layout");
     if (by_layout) {
@@ -68,5 +66,15 @@ sq_status sq_write_mesh_report(const char *path, const char *input, const cad_mo
     sq_json_key_number(&j, "total", t->total);
     sq_json_end_object(&j);
     sq_json_end_object(&j);
+}
+
+sq_status sq_write_mesh_report(const char *path, const char *input, const cad_model *model,
+                               int face, const sq_face_info *info, const sq_road_choice *road,
+                               const sq_layout_result *r, const sq_quad_mesh *m,
+                               const sq_quad_quality *q, const sq_mesh_timings *t, sq_error *err)
+{
+    sq_outfile f;
+    SQ_TRY(sq_outfile_open(path, &f, err));
+    sq_print_mesh_report(f.fp, input, model, face, info, road, r, m, q, t);
     return sq_outfile_commit(&f, err);
 }

@@ -1,0 +1,339 @@
+/* semquad — the public C API of libsemquad.
+ *
+ * CAD (STEP, IGES, BREP) in, block-structured high-order quadrilateral
+ * meshes out.  This header is the whole contract: it names no OpenCASCADE,
+ * CGAL or CHOLMOD type, and the `semquad` command uses nothing else.
+ *
+ * Conventions (those of CHOLMOD and libCEED):
+ *   - Every fallible function returns an sq_status (SQ_OK = 0; the other
+ *     values are the `semquad` command's exit statuses) and, on failure,
+ *     fills the caller's sq_error (last argument, may be NULL) with one line.
+ *     The library never prints, never exits and keeps no global state.
+ *   - Handles are opaque.  What a function creates (`**out`) the caller
+ *     frees with the matching `_free(&h)`, which accepts NULL and NULLs the
+ *     handle; a failing create leaves *out NULL.  Strings and arrays handed
+ *     over as `char **` or `T **` are freed with sq_free.  Pointers returned
+ *     by accessors are borrowed: valid until their handle is freed.
+ *   - Options live in one struct, sq_options, initialised by
+ *     sq_options_init; fields added later get defaults there, so code that
+ *     calls sq_options_init first keeps compiling and meaning the same.
+ *   - Methods are chosen by name (sq_options.field, sq_options.road), so
+ *     new fields and new roads to quads add names, not functions.
+ *
+ * Life cycle:  sq_model_open → sq_face_mesh (or sq_face_triangulate,
+ * sq_face_field, sq_face_layout for the pipeline's intermediate stages) →
+ * accessors / sq_mesh_write → sq_mesh_free → sq_model_free.
+ * Several results of one model may live at once; each borrows its model,
+ * so free them before the model.  One handle must not be used from two
+ * threads at once. */
+#ifndef SEMQUAD_H
+#define SEMQUAD_H
+
+#include <stddef.h>
+
+#ifdef __cplusplus
+extern "C" {
+#endif
+
+#if defined(__GNUC__)
+#define SQ_API __attribute__((visibility("default")))
+#else
+#define SQ_API
+#endif
+
+#define SEMQUAD_VERSION_MAJOR 0
+#define SEMQUAD_VERSION_MINOR 2
+#define SEMQUAD_VERSION_PATCH 0
+
+/* "MAJOR.MINOR.PATCH" of the library actually linked (compare with the
+ * macros to detect a header/library mismatch).  Never NULL. */
+SQ_API const char *sq_version(void);
+
+/* ---- Status and errors ------------------------------------------------- */
+
+typedef enum {
+    SQ_OK = 0,
+    SQ_ERR_INTERNAL = 1, /* bug, allocation failure, numerical breakdown */
+    SQ_ERR_USAGE = 2,    /* bad argument or option value */
+    SQ_ERR_INPUT = 3,    /* input file missing, unreadable or not valid CAD */
+    SQ_ERR_GEOMETRY = 4, /* geometry not supported or not a valid face */
+    SQ_ERR_PATTERN = 5,  /* invalid singularity pattern */
+    SQ_ERR_LAYOUT = 6,   /* no valid layout / no valid all-quad mesh */
+    SQ_ERR_OUTPUT = 7    /* output could not be written */
+} sq_status;
+
+typedef struct {
+    sq_status code;
+    const char *file; /* source file and line where it was raised */
+    int line;
+    const char *func;
+    char msg[512]; /* one line, no trailing newline */
+} sq_error;
+
+/* Reset err (NULL-safe) to SQ_OK with an empty message. */
+SQ_API void sq_error_clear(sq_error *err);
+
+/* Fill err (if not NULL) with code and a printf-style message, where it
+ * was raised, and return code: for callers' own errors and callbacks. */
+SQ_API sq_status sq_error_set(sq_error *err, sq_status code, const char *file, int line,
+                              const char *func, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 6, 7)))
+#endif
+    ;
+
+/* Raise an error from the current function; propagate a failing status
+ * (the callee filled err). */
+#define SQ_FAIL(err, code, ...) sq_error_set((err), (code), __FILE__, __LINE__, __func__, __VA_ARGS__)
+#define SQ_TRY(expr)                                                                               \
+    do {                                                                                           \
+        sq_status sq_try_status_ = (expr);                                                         \
+        if (sq_try_status_ != SQ_OK) return sq_try_status_;                                        \
+    } while (0)
+
+/* Short name of a status: "ok", "internal error", "usage error", "input
+ * error", "unsupported geometry", "invalid singularity pattern", "no valid layout",
+ * "output error".  Never NULL. */
+SQ_API const char *sq_status_name(sq_status code);
+
+/* Free a string or array the library handed over (NULL-safe). */
+SQ_API void sq_free(void *p);
+
+/* ---- Messages ---------------------------------------------------------- */
+
+typedef enum {
+    SQ_LOG_INFO = 0,     /* a stage done (with its time), what healing fixed */
+    SQ_LOG_NOTE = 1,     /* a choice made for the user (default face, fallback road, healing) */
+    SQ_LOG_WARNING = 2   /* a result that may not be what was asked for */
+} sq_log_level;
+
+/* Called with one line (no newline) as the work proceeds; `data` is
+ * sq_options.log_data.  NULL: silent. */
+typedef void (*sq_log_fn)(void *data, sq_log_level level, const char *line);
+
+/* ---- Options ----------------------------------------------------------- */
+
+typedef struct {
+    /* Reading (sq_model_open) */
+    int heal;              /* 1: heal defects within the tolerance (default); 0: refuse them */
+    double heal_tolerance; /* file unit; 0: the file's own uncertainty (default) */
+
+    /* The face's curved triangulation, on which the fields are solved */
+    int tri_order;            /* geometry order 1..12; 0: the field's order, at most 12 */
+    double tri_size;          /* target edge length; 0: automatic */
+    double tri_min_angle_deg; /* 0: the default (sq_face_triangulate) */
+    double tri_max_turn_deg;  /* boundary turning per edge; 0: the default */
+
+    /* The field that guides the layout, by name:
+     *   "auto"    the guiding field (u, v) = (cos 4θ, sin 4θ) (Marcon 2019),
+     *             then the H/θ field of a better pattern when its singular
+     *             points are poor (Jezdimirović 2021 §4) — the default;
+     *   "htheta"  the H/θ field of `singularities` ("natural" if NULL).
+     * Unknown names are SQ_ERR_USAGE. */
+    const char *field;
+    const char *singularities; /* NULL, "natural", or a pattern file */
+    const char *method;        /* "auto" (default), "cg" or "dg" */
+    int field_order;           /* spectral order P 1..16; 0: the stage's default */
+    int field_grading;         /* 1: grade the triangulation at singular corners (default) */
+    int allow_misaligned;      /* 1: trace even when a hole breaks holonomy */
+    double merge_distance;     /* separatrix merging, in local sizes; 0: default */
+
+    /* The quads (sq_face_mesh), by road:
+     *   "auto"    the layout road, the split road when it fails (default);
+     *   "layout"  field → layout → patches (block-structured);
+     *   "split"   a triangulation split into quads (never fails a valid face). */
+    const char *road;
+    int order;          /* element order Q 1..10 (default 4) */
+    double size;        /* target quad size; 0: sqrt(area)/8, halved when quads fold */
+    const char *nodes;  /* "gll" (default) or "equispaced" */
+    double max_quads;   /* refuse sizes giving more quads (default 2e7) */
+    int nbl;            /* boundary layers on the CAD edges bl_edges[nbl] (0: none) */
+    const int *bl_edges;
+    double bl_first, bl_ratio; /* first layer thickness, growth ratio (default 1.2) */
+    int bl_layers;
+
+    /* A convergence study of the solvers (sq_face_converge): -Δu = 0 with
+     * u exact on the boundary, CG and/or DG, orders and sizes */
+    const char *study_solution; /* "exp-sin" (default), "re-z5", "poly", "sin-sinh" */
+    const char *study_methods;  /* "cg", "dg" or "both" (default) */
+    int study_pmin, study_pmax; /* orders; 0: 1 and 12 */
+    int study_nsizes;           /* 0: one run per order at the automatic size */
+    const double *study_sizes;  /* longest triangle edge of each run */
+    int study_geom_order;       /* 0: max(P, 8) capped at 12 */
+
+    /* Messages */
+    sq_log_fn log; /* NULL: silent (default) */
+    void *log_data;
+} sq_options;
+
+/* Fill o with the defaults above.  Call before setting fields. */
+SQ_API void sq_options_init(sq_options *o);
+
+/* SQ_ERR_USAGE naming the first bad value (an unknown name, an order out
+ * of range, boundary layers without thickness...): every stage checks its
+ * options, this checks them all before any work. */
+SQ_API sq_status sq_options_check(const sq_options *o, sq_error *err);
+
+/* ---- A CAD model -------------------------------------------------------- */
+
+typedef struct sq_model sq_model;
+
+/* Read a STEP, IGES or BREP file (by content, not extension), healing it
+ * as opt says (NULL: defaults).  SQ_ERR_INPUT if the file cannot be read. */
+SQ_API sq_status sq_model_open(const char *path, const sq_options *opt, sq_model **out,
+                               sq_error *err);
+SQ_API void sq_model_free(sq_model **m);
+
+/* Number of faces; faces are numbered 0..n-1 in the file's order. */
+SQ_API int sq_model_num_faces(const sq_model *m);
+
+/* The face a command meshes when none is named: the only planar face, or
+ * the largest planar one (*why, if not NULL, then says so; else NULL). */
+SQ_API int sq_model_default_face(const sq_model *m, const char **why);
+
+/* The file's length unit ("mm", "m", "inch", ...) and healing tolerance. */
+SQ_API const char *sq_model_unit(const sq_model *m);
+SQ_API double sq_model_heal_tolerance(const sq_model *m);
+
+/* Status of face `face`: "ok", "healed", "not planar" or "broken"; *reason
+ * (if not NULL) says why a face is broken (else NULL).  NULL when face is
+ * out of range. */
+SQ_API const char *sq_model_face_status(const sq_model *m, int face, const char **reason);
+
+/* What the file holds (`semquad info`): every face (face < 0) or one, as
+ * text (json = 0) or JSON (json = 1), in *text (sq_free it). */
+SQ_API sq_status sq_model_info(const sq_model *m, int face, int json, char **text, sq_error *err);
+
+/* One line saying what healing fixed on `face` (*text NULL if nothing). */
+SQ_API sq_status sq_model_heal_summary(const sq_model *m, int face, char **text, sq_error *err);
+
+/* ---- Stages of one face -------------------------------------------------
+ * Each computes one stage of the pipeline on face `face` of m (-1: the
+ * default face) and hands over a result.  Every result can describe itself
+ * as the `semquad` command prints it (sq_*_describe, text for sq_free),
+ * write its outputs (format from the path's extension) and its JSON report. */
+
+typedef struct sq_triangles sq_triangles;   /* curved triangulation */
+typedef struct sq_field sq_field;           /* guiding or H/θ field, singular points */
+typedef struct sq_quad_layout sq_quad_layout; /* quad layout (patches) */
+typedef struct sq_mesh sq_mesh;             /* high-order quad mesh */
+
+/* The face a result belongs to. */
+SQ_API int sq_triangles_face(const sq_triangles *t);
+SQ_API int sq_field_face(const sq_field *f);
+SQ_API int sq_quad_layout_face(const sq_quad_layout *l);
+SQ_API int sq_mesh_face(const sq_mesh *m);
+
+/* Curved triangulation of order opt->tri_order (`semquad triangulate`).
+ * Writes .vtu and .svg. */
+SQ_API sq_status sq_face_triangulate(const sq_model *m, int face, const sq_options *opt,
+                                     sq_triangles **out, sq_error *err);
+SQ_API void sq_triangles_free(sq_triangles **t);
+SQ_API int sq_triangles_count(const sq_triangles *t);
+SQ_API sq_status sq_triangles_describe(const sq_triangles *t, char **text, sq_error *err);
+SQ_API sq_status sq_triangles_write(const sq_triangles *t, const char *path, sq_error *err);
+SQ_API sq_status sq_triangles_write_report(const sq_triangles *t, const char *path,
+                                           sq_error *err);
+
+/* The field and its singular points (`semquad field`): opt->field and
+ * opt->singularities choose it (the guiding field unless a pattern is
+ * given).  Writes .vtu and .svg. */
+SQ_API sq_status sq_face_field(const sq_model *m, int face, const sq_options *opt,
+                               sq_field **out, sq_error *err);
+SQ_API void sq_field_free(sq_field **f);
+/* Singular points: n of them; xy[2k], xy[2k+1] in the face's frame and
+ * valence[k] (3, 5, ...: the quads that meet there).  Borrowed. */
+SQ_API int sq_field_num_singular_points(const sq_field *f);
+SQ_API const double *sq_field_singular_xy(const sq_field *f);
+SQ_API const int *sq_field_singular_valence(const sq_field *f);
+SQ_API sq_status sq_field_describe(const sq_field *f, char **text, sq_error *err);
+SQ_API sq_status sq_field_write(const sq_field *f, const char *path, sq_error *err);
+SQ_API sq_status sq_field_write_report(const sq_field *f, const char *path, sq_error *err);
+
+/* The quad layout (`semquad layout`).  SQ_ERR_LAYOUT when no valid layout
+ * was found: *out then still holds the last one (to draw and report), and
+ * the caller frees it in every case.  Writes .svg (the layout) and .step
+ * (the face split into its patches, in the file's 3D frame). */
+SQ_API sq_status sq_face_layout(const sq_model *m, int face, const sq_options *opt,
+                                sq_quad_layout **out, sq_error *err);
+SQ_API void sq_quad_layout_free(sq_quad_layout **l);
+SQ_API int sq_quad_layout_num_patches(const sq_quad_layout *l);
+SQ_API int sq_quad_layout_num_singular_points(const sq_quad_layout *l);
+SQ_API sq_status sq_quad_layout_describe(const sq_quad_layout *l, char **text, sq_error *err);
+SQ_API sq_status sq_quad_layout_write(const sq_quad_layout *l, const char *path, sq_error *err);
+SQ_API sq_status sq_quad_layout_write_report(const sq_quad_layout *l, const char *path,
+                                             sq_error *err);
+
+/* ---- The mesh ----------------------------------------------------------- */
+
+/* Mesh face `face` with quads of order opt->order (`semquad mesh`). */
+SQ_API sq_status sq_face_mesh(const sq_model *m, int face, const sq_options *opt, sq_mesh **out,
+                              sq_error *err);
+SQ_API void sq_mesh_free(sq_mesh **m);
+
+/* Element order Q; each quad has (Q+1)^2 nodes. */
+SQ_API int sq_mesh_order(const sq_mesh *m);
+/* "layout" or "split": the road that made the mesh. */
+SQ_API const char *sq_mesh_road(const sq_mesh *m);
+
+/* Nodes: xyz[3k..3k+2], in the mesh's frame (sq_mesh_frame); for a planar
+ * face its plane's frame, so z = 0.  Borrowed. */
+SQ_API int sq_mesh_num_nodes(const sq_mesh *m);
+SQ_API const double *sq_mesh_nodes(const sq_mesh *m);
+/* The frame: origin[3], xdir[3], ydir[3] in the file's coordinates; the
+ * file's point of node k is origin + x xdir + y ydir (+ z xdir × ydir). */
+SQ_API void sq_mesh_frame(const sq_mesh *m, double origin[3], double xdir[3], double ydir[3]);
+
+/* Quads: nodes[(Q+1)^2 q + (Q+1) j + i] is node (i, j) of quad q,
+ * 0 <= i, j <= Q; (0,0), (Q,0), (Q,Q), (0,Q) its corners counter-
+ * clockwise; side k joins corner k to corner k+1.  Nodes along a side at
+ * Gauss–Lobatto–Legendre or equispaced parameters (opt->nodes).  Borrowed. */
+SQ_API int sq_mesh_num_quads(const sq_mesh *m);
+SQ_API const int *sq_mesh_quads(const sq_mesh *m);
+
+/* Boundary: n element sides, side[3s..3s+2] = quad, local side 0..3, and
+ * the CAD edge of the face it lies on (its tag: 0..sq_mesh_num_tags-1,
+ * the face's edges in `semquad info` order).  Borrowed. */
+SQ_API int sq_mesh_num_boundary_sides(const sq_mesh *m);
+SQ_API const int *sq_mesh_boundary_sides(const sq_mesh *m);
+SQ_API int sq_mesh_num_tags(const sq_mesh *m);
+
+/* Per-quad quality, nquads values each: the scaled Jacobian (min det J /
+ * max det J over the nodes; > 0 for a valid quad) and η (1 − max corner
+ * angle deviation from 90° / 90°).  Borrowed. */
+SQ_API const double *sq_mesh_scaled_jacobians(const sq_mesh *m);
+SQ_API const double *sq_mesh_eta(const sq_mesh *m);
+
+/* The report (docs/formats.md: counts, quality, field, layout, timings)
+ * as JSON text in *json (sq_free it), or written to a file. */
+SQ_API sq_status sq_mesh_report(const sq_mesh *m, char **json, sq_error *err);
+SQ_API sq_status sq_mesh_write_report(const sq_mesh *m, const char *path, sq_error *err);
+
+/* The one-line summary the command prints ("320 quads, order 4, ..."). */
+SQ_API sq_status sq_mesh_describe(const sq_mesh *m, char **text, sq_error *err);
+
+/* Write the mesh; the format from the extension: .msh (Gmsh MSH 4.1),
+ * .xml (Nektar++), .vtu (VTK), .svg (a picture).  Nothing is left at path
+ * on failure. */
+SQ_API sq_status sq_mesh_write(const sq_mesh *m, const char *path, sq_error *err);
+/* 1 if sq_mesh_write knows path's format, else 0 (check before meshing). */
+SQ_API int sq_mesh_format_known(const char *path);
+
+/* ---- A convergence study of the field solvers ------------------------- */
+
+typedef struct sq_study sq_study;
+
+/* L2 and H1 errors and rates of the sem/ solvers on face `face`
+ * (`semquad converge`), as the study_* options say. */
+SQ_API sq_status sq_face_converge(const sq_model *m, int face, const sq_options *opt,
+                                  sq_study **out, sq_error *err);
+SQ_API void sq_study_free(sq_study **s);
+/* The table the command prints. */
+SQ_API sq_status sq_study_describe(const sq_study *s, char **text, sq_error *err);
+/* .csv (every run) or .svg (log-log plot of the errors). */
+SQ_API sq_status sq_study_write(const sq_study *s, const char *path, sq_error *err);
+
+#ifdef __cplusplus
+}
+#endif
+#endif

@@ -1,0 +1,200 @@
+/* semquad public API: version, memory, options, messages, the shared
+ * helpers of api_private.h. */
+#include "api_private.h"
+#include "converge.h"
+
+#include <stdarg.h>
+#include <stdio.h>
+#include <stdlib.h>
+#include <string.h>
+
+#define SQ_STR_(x) #x
+#define SQ_STR(x) SQ_STR_(x)
+
+const char *sq_version(void)
+{
+    return SQ_STR(SEMQUAD_VERSION_MAJOR) "." SQ_STR(SEMQUAD_VERSION_MINOR) "." SQ_STR(
+        SEMQUAD_VERSION_PATCH);
+}
+
+void sq_free(void *p) { free(p); }
+
+void sq_options_init(sq_options *o)
+{
+    memset(o, 0, sizeof *o);
+    o->heal = 1;
+    o->field = "auto";
+    o->method = "auto";
+    o->field_grading = 1;
+    o->road = "auto";
+    o->order = 4;
+    o->nodes = "gll";
+    o->max_quads = SQ_MAX_QUADS;
+    o->bl_ratio = 1.2;
+}
+
+void sq_api_log(const sq_options *o, sq_log_level level, const char *fmt, ...)
+{
+    if (!o || !o->log) return;
+    char line[1280];
+    va_list ap;
+    va_start(ap, fmt);
+    vsnprintf(line, sizeof line, fmt, ap);
+    va_end(ap);
+    o->log(o->log_data, level, line);
+}
+
+static sq_status parse_method(const char *val, sq_method *out, sq_error *err)
+{
+    if (!val || !strcmp(val, "auto"))
+        *out = SQ_METHOD_AUTO;
+    else if (!strcmp(val, "cg"))
+        *out = SQ_METHOD_CG;
+    else if (!strcmp(val, "dg"))
+        *out = SQ_METHOD_DG;
+    else
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--method expects auto, cg or dg, got '%s'", val);
+    return SQ_OK;
+}
+
+/* The field names of this version (sq_options.field). */
+static sq_status check_field(const sq_options *o, sq_error *err)
+{
+    if (!o->field || !strcmp(o->field, "auto") || !strcmp(o->field, "htheta")) return SQ_OK;
+    return SQ_FAIL(err, SQ_ERR_USAGE, "unknown field '%s' (this version has: auto, htheta)",
+                   o->field);
+}
+
+/* The pattern a field name implies: "htheta" without one is "natural". */
+static const char *singularities(const sq_options *o)
+{
+    if (o->singularities) return o->singularities;
+    return o->field && !strcmp(o->field, "htheta") ? "natural" : NULL;
+}
+
+sq_status sq_api_field_options(const sq_options *o, sq_field_options *fo, sq_error *err)
+{
+    sq_field_options_default(fo);
+    SQ_TRY(check_field(o, err));
+    SQ_TRY(parse_method(o->method, &fo->method, err));
+    if (o->field_order) fo->order = o->field_order;
+    if (o->tri_size > 0.0) fo->tri.size = o->tri_size;
+    if (!o->field_grading) fo->grading = 0.0; /* uniform near singular vertices */
+    /* isoparametric unless told otherwise (the triangulation stops at 12) */
+    fo->tri.order = o->tri_order ? o->tri_order : (fo->order < 12 ? fo->order : 12);
+    return SQ_OK;
+}
+
+sq_status sq_api_layout_options(const sq_options *o, int for_mesh, sq_layout_options *lo,
+                                sq_error *err)
+{
+    if (for_mesh)
+        sq_layout_options_for_mesh(lo);
+    else
+        sq_layout_options_default(lo);
+    SQ_TRY(check_field(o, err));
+    SQ_TRY(parse_method(o->method, &lo->field.method, err));
+    if (o->field_order) lo->field.order = o->field_order;
+    if (o->field_order && for_mesh) lo->htheta.order = o->field_order;
+    if (o->tri_size > 0.0) lo->field.tri.size = o->tri_size;
+    if (o->merge_distance > 0.0) lo->trace.merge_distance = o->merge_distance;
+    lo->singularities = singularities(o);
+    lo->allow_misaligned = o->allow_misaligned;
+    lo->field.tri.order = lo->field.order < 12 ? lo->field.order : 12;
+    if (for_mesh) lo->htheta.tri.order = lo->htheta.order < 12 ? lo->htheta.order : 12;
+    return SQ_OK;
+}
+
+sq_status sq_api_mesher_options(const sq_options *o, sq_mesher_options *mo, sq_error *err)
+{
+    sq_mesher_options_default(mo);
+    if (o->order < 1 || o->order > 10)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "order %d: expects 1..10", o->order);
+    mo->order = o->order;
+    mo->size = o->size;
+    if (!o->nodes || !strcmp(o->nodes, "gll"))
+        mo->nodes = SQ_NODES_GLL;
+    else if (!strcmp(o->nodes, "equispaced"))
+        mo->nodes = SQ_NODES_EQUISPACED;
+    else
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--nodes expects gll or equispaced, got '%s'", o->nodes);
+    mo->max_quads = o->max_quads;
+    mo->nbl = o->nbl;
+    mo->bl_edges = o->bl_edges;
+    mo->bl_first = o->bl_first;
+    mo->bl_ratio = o->bl_ratio;
+    mo->bl_layers = o->bl_layers;
+    if (mo->nbl > 0 && (!(mo->bl_first > 0.0) || mo->bl_layers < 1))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--bl needs --bl-first d > 0 and --bl-layers n >= 1");
+    return SQ_OK;
+}
+
+sq_status sq_api_text_open(sq_api_text *t, sq_error *err)
+{
+    t->buf = NULL;
+    t->len = 0;
+    t->fp = open_memstream(&t->buf, &t->len);
+    return t->fp ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+}
+
+sq_status sq_api_text_close(sq_api_text *t, char **text, sq_error *err)
+{
+    int bad = ferror(t->fp);
+    fclose(t->fp);
+    if (bad) {
+        free(t->buf);
+        *text = NULL;
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    *text = t->buf;
+    return SQ_OK;
+}
+
+int sq_api_ends_with(const char *s, const char *suffix)
+{
+    size_t n = strlen(s), k = strlen(suffix);
+    return n >= k && !strcmp(s + n - k, suffix);
+}
+
+sq_status sq_api_parse_road(const char *val, sq_api_road *road, sq_error *err)
+{
+    if (!val || !strcmp(val, "auto"))
+        *road = SQ_API_ROAD_AUTO;
+    else if (!strcmp(val, "layout"))
+        *road = SQ_API_ROAD_LAYOUT;
+    else if (!strcmp(val, "split"))
+        *road = SQ_API_ROAD_SPLIT;
+    else
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--road expects auto, layout or split, got '%s'", val);
+    return SQ_OK;
+}
+
+sq_status sq_options_check(const sq_options *o, sq_error *err)
+{
+    sq_api_road road;
+    sq_layout_options lo;
+    sq_mesher_options mo;
+    SQ_TRY(sq_api_parse_road(o->road, &road, err));
+    SQ_TRY(sq_api_layout_options(o, 1, &lo, err));
+    SQ_TRY(sq_api_mesher_options(o, &mo, err));
+    int methods;
+    return sq_api_study_methods(o, &methods, err);
+}
+
+sq_status sq_api_study_methods(const sq_options *o, int *methods, sq_error *err)
+{
+    if (o->study_solution) {
+        sem_exact_fn fn;
+        SQ_TRY(sq_converge_solution(o->study_solution, &fn, err));
+    }
+    const char *v = o->study_methods;
+    if (!v || !strcmp(v, "both"))
+        *methods = SQ_CONV_CG | SQ_CONV_DG;
+    else if (!strcmp(v, "cg"))
+        *methods = SQ_CONV_CG;
+    else if (!strcmp(v, "dg"))
+        *methods = SQ_CONV_DG;
+    else
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--method expects cg, dg or both, got '%s'", v);
+    return SQ_OK;
+}

@@ -1,0 +1,103 @@
+/* semquad — what the public API's handles hold (include/semquad.h) and the
+ * helpers its files share: options into each stage's own, faces from a
+ * model, messages.  Nothing here is public. */
+#ifndef SQ_API_PRIVATE_H
+#define SQ_API_PRIVATE_H
+
+#include "cad.h"
+#include "layout_pipeline.h"
+#include "quad_mesher.h"
+#include "semquad.h"
+#include "write_mesh_report.h"
+
+struct sq_model {
+    cad_model *cad;
+    char *path;    /* as given to sq_model_open */
+    double t_read; /* seconds */
+    sq_options opt; /* as opened (its logger serves sq_model_info) */
+};
+
+/* One face of a model, open for a stage (results borrow their model). */
+typedef struct {
+    const sq_model *model;
+    int index;
+    cad_face *cad;
+} sq_api_face;
+
+struct sq_triangles {
+    sq_api_face face;
+    sq_triangulation tri;
+};
+
+struct sq_field {
+    sq_api_face face;
+    int htheta; /* 1: the H/θ field (ht), 0: the guiding field (an) */
+    sq_field_analysis an;
+    sq_htheta ht;
+    int allow_misaligned;
+    int nsing;
+    double *xy;
+    int *valence;
+};
+
+struct sq_quad_layout {
+    sq_api_face face;
+    sq_layout_result r;
+    double *t_split; /* seconds writing the patches' STEP file, -1 if none (the
+                        writers take a const handle: the clock is apart) */
+};
+
+struct sq_mesh {
+    sq_api_face face;
+    sq_face_info info;
+    sq_layout_result r;   /* zeroed on the split road */
+    sq_road_choice road;
+    sq_quad_mesh *q;
+    sq_quad_quality quality;
+    sq_mesh_timings t;
+    double t0;            /* sq_now() when meshing began, for timings.total */
+    double *t_write;      /* seconds in sq_mesh_write so far (apart, as t_split) */
+    double *xyz, *sjac, *eta;
+    int *bnd;
+    double origin[3], xdir[3], ydir[3];
+};
+
+/* Open face `face` of m (-1: the default face, logged as a note). */
+sq_status sq_api_face_open(const sq_model *m, int face, const sq_options *o, sq_api_face *f,
+                           sq_error *err);
+void sq_api_face_close(sq_api_face *f);
+
+/* One line to o->log, printf-style (nothing without a logger). */
+void sq_api_log(const sq_options *o, sq_log_level level, const char *fmt, ...)
+#if defined(__GNUC__)
+    __attribute__((format(printf, 3, 4)))
+#endif
+    ;
+
+/* sq_options into the stages' own options; SQ_ERR_USAGE naming a bad
+ * value.  `for_mesh`: the mesh command's cheaper field settings. */
+sq_status sq_api_field_options(const sq_options *o, sq_field_options *fo, sq_error *err);
+sq_status sq_api_layout_options(const sq_options *o, int for_mesh, sq_layout_options *lo,
+                                sq_error *err);
+sq_status sq_api_mesher_options(const sq_options *o, sq_mesher_options *mo, sq_error *err);
+
+/* sq_options.study_methods as SQ_CONV_* bits (the solution name checked). */
+sq_status sq_api_study_methods(const sq_options *o, int *methods, sq_error *err);
+
+/* sq_options.road */
+typedef enum { SQ_API_ROAD_AUTO = 0, SQ_API_ROAD_LAYOUT, SQ_API_ROAD_SPLIT } sq_api_road;
+sq_status sq_api_parse_road(const char *val, sq_api_road *road, sq_error *err);
+
+/* 1 if path s ends with suffix (the output formats go by extension). */
+int sq_api_ends_with(const char *s, const char *suffix);
+
+/* Text written to a memory stream, handed over as a string. */
+typedef struct {
+    FILE *fp;
+    char *buf;
+    size_t len;
+} sq_api_text;
+sq_status sq_api_text_open(sq_api_text *t, sq_error *err);
+sq_status sq_api_text_close(sq_api_text *t, char **text, sq_error *err);
+
+#endif

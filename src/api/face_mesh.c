@@ -1,0 +1,324 @@
+/* semquad public API: the mesh of a face (`semquad mesh`): the layout
+ * road (field, layout, patches), or the split road (quad_split.h) when it
+ * fails or is asked for. */
+#include "api_private.h"
+#include "quad_split.h"
+#include "write_msh.h"
+#include "write_nektar.h"
+#include "write_quad_svg.h"
+#include "write_quad_vtu.h"
+
+#include <stdlib.h>
+#include <string.h>
+
+/* without --size: halvings of the default size tried when quads fold */
+#define DEFAULT_SIZE_HALVINGS 3
+
+/* Falls back on the split road (quad_split.h): what the layout road could
+ * not do on a face the split road may mesh; not a usage, input or output
+ * error, not a pattern the user imposed, not boundary layers (which need
+ * the layout's chords). */
+static int takes_split_road(sq_status st, const sq_layout_options *lo, const sq_mesher_options *mo)
+{
+    return (st == SQ_ERR_LAYOUT || st == SQ_ERR_INTERNAL || st == SQ_ERR_GEOMETRY ||
+            st == SQ_ERR_PATTERN) &&
+           !lo->singularities && mo->nbl == 0;
+}
+
+static void layout_progress(const sq_options *o, const sq_layout_result *r,
+                            const sq_mesh_timings *t)
+{
+    sq_api_log(o, SQ_LOG_INFO, "%s field %s P=%d on %d triangles (%.3f s)", r->field.kind,
+               r->field.method == SEM_CG ? "CG" : "DG", r->field.order, r->field.triangles,
+               t->triangulate + t->solve);
+    sq_api_log(o, SQ_LOG_INFO, "%d singular points, %d separatrices, %d quad patches (%.3f s)",
+               r->nsing, r->layout.stats.separatrices, r->layout.stats.quad_patches,
+               t->critical_points + t->trace + t->layout);
+}
+
+/* Mesh by `mesh(ctx, &m)` at mo's size; without a size the default,
+ * sqrt(area)/8, can be too coarse for a small curved feature (an aerofoil
+ * in a large box: its curved quads fold): halve it, a few times, rather
+ * than fail. */
+typedef sq_status (*mesh_fn)(void *ctx, const sq_mesher_options *mo, sq_quad_mesh **m, sq_error *err);
+
+static sq_status mesh_halving(mesh_fn mesh, void *ctx, sq_mesher_options mo, double default_size,
+                              const sq_options *o, sq_quad_mesh **m, sq_quad_quality *q,
+                              sq_error *err)
+{
+    sq_status st = SQ_OK;
+    for (int k = 0;; k++) {
+        if (k > 0) {
+            mo.size = default_size / (double)(1 << k);
+            sq_api_log(o, SQ_LOG_NOTE, "%d quads fold at size %.4g; trying %.4g", q->inverted,
+                       2.0 * mo.size, mo.size);
+            sq_quad_mesh_free(m);
+        }
+        st = mesh(ctx, &mo, m, err);
+        if (st == SQ_OK) st = sq_quad_mesh_quality(*m, NULL, NULL, q, err);
+        if (o->size > 0.0 || st != SQ_OK || q->inverted == 0 || k == DEFAULT_SIZE_HALVINGS) break;
+    }
+    if (st == SQ_OK && q->inverted > 0)
+        st = SQ_FAIL(err, SQ_ERR_LAYOUT,
+                     "%d quads have a non-positive Jacobian (min scaled Jacobian %.3g); try a "
+                     "smaller --size",
+                     q->inverted, q->min_scaled_jacobian);
+    if (st != SQ_OK) sq_quad_mesh_free(m);
+    return st;
+}
+
+typedef struct {
+    const cad_face *face;
+    const sq_layout_result *r;
+} layout_ctx;
+
+static sq_status mesh_by_layout(void *ctx, const sq_mesher_options *mo, sq_quad_mesh **m,
+                                sq_error *err)
+{
+    const layout_ctx *c = ctx;
+    return sq_mesh_layout(c->face, c->r->info, &c->r->layout, mo, m, err);
+}
+
+typedef struct {
+    const cad_face *face;
+    const sq_face_info *info;
+} split_ctx;
+
+static sq_status mesh_by_split(void *ctx, const sq_mesher_options *mo, sq_quad_mesh **m,
+                               sq_error *err)
+{
+    const split_ctx *c = ctx;
+    return sq_mesh_split(c->face, c->info, mo, m, err);
+}
+
+/* The layout road: field, layout (sq_layout_run), quads (sq_mesh_layout). */
+static sq_status layout_road(sq_mesh *h, const sq_layout_options *lo, sq_mesher_options *mo,
+                             const sq_options *o, sq_error *err)
+{
+    sq_layout_result *r = &h->r;
+    sq_mesh_timings *t = &h->t;
+    sq_status st = sq_layout_run(h->face.cad, lo, r, err);
+    char split[512];
+    if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && sq_layout_note(r, split, sizeof split))
+        sq_api_log(o, SQ_LOG_NOTE, "%s", split);
+    if (st != SQ_OK) return st;
+    t->triangulate = r->field.t_triangulate;
+    t->solve = r->field.t_solve;
+    t->critical_points = r->field.t_critical;
+    t->trace = r->t_trace;
+    t->layout = r->t_layout;
+    layout_progress(o, r, t);
+    double t1 = sq_now();
+    /* sizes from e^H where the H/θ field was traced */
+    sq_cross_field cf;
+    if (!strcmp(r->field.kind, "H-theta")) {
+        cf = sq_htheta_cross_field(&r->htheta);
+        mo->field = &cf;
+    }
+    layout_ctx c = {h->face.cad, r};
+    st = mesh_halving(mesh_by_layout, &c, *mo, sq_mesher_default_size(r->layout.face_area), o,
+                      &h->q, &h->quality, err);
+    mo->field = NULL;
+    t->mesh = sq_now() - t1;
+    return st;
+}
+
+static sq_status split_road(sq_mesh *h, const sq_mesher_options *mo, const sq_options *o,
+                            sq_error *err)
+{
+    split_ctx c = {h->face.cad, &h->info};
+    double t1 = sq_now();
+    sq_status st = mesh_halving(mesh_by_split, &c, *mo, sq_mesher_default_size(h->info.area), o,
+                                &h->q, &h->quality, err);
+    h->t.mesh = sq_now() - t1;
+    if (st != SQ_OK && h->road.reason[0]) {
+        char split_msg[sizeof err->msg];
+        snprintf(split_msg, sizeof split_msg, "%s", err->msg);
+        st = SQ_FAIL(err, st, "%s (the split road; the layout road: %s)", split_msg,
+                     h->road.reason);
+    }
+    return st;
+}
+
+/* Both roads as the options say: the layout road first unless told
+ * otherwise, the split road where it gives way. */
+static sq_status run_roads(sq_mesh *h, sq_api_road road, const sq_layout_options *lo,
+                           sq_mesher_options *mo, const sq_options *o, sq_error *err)
+{
+    h->road.name = road == SQ_API_ROAD_SPLIT ? "split" : "layout";
+    sq_status st = SQ_OK;
+    if (road != SQ_API_ROAD_SPLIT) st = layout_road(h, lo, mo, o, err);
+    if (road == SQ_API_ROAD_AUTO && takes_split_road(st, lo, mo)) {
+        snprintf(h->road.reason, sizeof h->road.reason, "%s", err->msg);
+        sq_api_log(o, SQ_LOG_NOTE, "the layout road failed (%s); meshing by the split road",
+                   err->msg);
+        h->road.name = "split";
+        sq_quad_mesh_free(&h->q);
+        st = SQ_OK;
+    }
+    if (st == SQ_OK && !strcmp(h->road.name, "split")) st = split_road(h, mo, o, err);
+    return st;
+}
+
+/* The plain arrays of the public accessors. */
+static sq_status fill_arrays(sq_mesh *h, sq_error *err)
+{
+    const sq_quad_mesh *q = h->q;
+    h->xyz = malloc(3 * (size_t)q->nnodes * sizeof *h->xyz);
+    h->sjac = malloc((size_t)q->nquads * sizeof *h->sjac);
+    h->eta = malloc((size_t)q->nquads * sizeof *h->eta);
+    h->bnd = malloc(3 * (size_t)(q->nbnd ? q->nbnd : 1) * sizeof *h->bnd);
+    if (!h->xyz || !h->sjac || !h->eta || !h->bnd)
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < q->nnodes; k++) {
+        h->xyz[3 * k] = q->xy[2 * k];
+        h->xyz[3 * k + 1] = q->xy[2 * k + 1];
+        h->xyz[3 * k + 2] = 0.0;
+    }
+    for (int s = 0; s < q->nbnd; s++) {
+        h->bnd[3 * s] = q->bnd_quad[s];
+        h->bnd[3 * s + 1] = q->bnd_side[s];
+        h->bnd[3 * s + 2] = q->bnd_tag[s];
+    }
+    cad_face_frame(h->face.cad, h->origin, h->xdir, h->ydir);
+    return sq_quad_mesh_quality(q, h->eta, h->sjac, &h->quality, err);
+}
+
+sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_mesh **out,
+                       sq_error *err)
+{
+    *out = NULL;
+    sq_options def;
+    if (!o) sq_options_init(&def);
+    if (!o) o = &def;
+    sq_api_road road;
+    sq_layout_options lo;
+    sq_mesher_options mo;
+    SQ_TRY(sq_api_parse_road(o->road, &road, err));
+    SQ_TRY(sq_api_layout_options(o, 1, &lo, err));
+    SQ_TRY(sq_api_mesher_options(o, &mo, err));
+    sq_mesh *h = calloc(1, sizeof *h);
+    if (!h || !(h->t_write = calloc(1, sizeof *h->t_write))) {
+        free(h);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    h->t0 = sq_now();
+    h->t.read = model->t_read;
+    sq_status st = sq_api_face_open(model, face, o, &h->face, err);
+    char *healed = NULL;
+    if (st == SQ_OK) st = sq_model_heal_summary(model, h->face.index, &healed, err);
+    if (healed) sq_api_log(o, SQ_LOG_INFO, "%s", healed);
+    free(healed);
+    if (st == SQ_OK) sq_api_log(o, SQ_LOG_INFO, "read %s (%.3f s)", model->path, model->t_read);
+    if (st == SQ_OK) st = sq_face_info_compute(h->face.cad, &h->info, err);
+    if (st == SQ_OK) st = sq_face_check_cusps(&h->info, err);
+    /* a size that would exhaust memory is refused before any work */
+    if (st == SQ_OK && o->size > 0.0)
+        st = sq_mesher_check_size(h->info.area, mo.size, mo.max_quads, err);
+    if (st == SQ_OK) st = run_roads(h, road, &lo, &mo, o, err);
+    if (st == SQ_OK) st = fill_arrays(h, err);
+    if (st != SQ_OK) {
+        sq_mesh_free(&h);
+        return st;
+    }
+    sq_api_log(o, SQ_LOG_INFO, "meshed (%.3f s)", h->t.mesh);
+    *out = h;
+    return SQ_OK;
+}
+
+void sq_mesh_free(sq_mesh **m)
+{
+    if (!m || !*m) return;
+    sq_mesh *h = *m;
+    free(h->xyz);
+    free(h->sjac);
+    free(h->eta);
+    free(h->bnd);
+    free(h->t_write);
+    sq_quad_mesh_free(&h->q);
+    sq_layout_result_free(&h->r);
+    sq_face_info_free(&h->info);
+    sq_api_face_close(&h->face);
+    free(h);
+    *m = NULL;
+}
+
+int sq_mesh_face(const sq_mesh *m) { return m->face.index; }
+int sq_mesh_order(const sq_mesh *m) { return m->q->order; }
+const char *sq_mesh_road(const sq_mesh *m) { return m->road.name; }
+int sq_mesh_num_nodes(const sq_mesh *m) { return m->q->nnodes; }
+const double *sq_mesh_nodes(const sq_mesh *m) { return m->xyz; }
+int sq_mesh_num_quads(const sq_mesh *m) { return m->q->nquads; }
+const int *sq_mesh_quads(const sq_mesh *m) { return m->q->conn; }
+int sq_mesh_num_boundary_sides(const sq_mesh *m) { return m->q->nbnd; }
+const int *sq_mesh_boundary_sides(const sq_mesh *m) { return m->bnd; }
+int sq_mesh_num_tags(const sq_mesh *m) { return m->q->ntags; }
+const double *sq_mesh_scaled_jacobians(const sq_mesh *m) { return m->sjac; }
+const double *sq_mesh_eta(const sq_mesh *m) { return m->eta; }
+
+void sq_mesh_frame(const sq_mesh *m, double origin[3], double xdir[3], double ydir[3])
+{
+    memcpy(origin, m->origin, sizeof m->origin);
+    memcpy(xdir, m->xdir, sizeof m->xdir);
+    memcpy(ydir, m->ydir, sizeof m->ydir);
+}
+
+int sq_mesh_format_known(const char *path)
+{
+    return sq_api_ends_with(path, ".msh") || sq_api_ends_with(path, ".xml") ||
+           sq_api_ends_with(path, ".vtu") || sq_api_ends_with(path, ".svg");
+}
+
+sq_status sq_mesh_write(const sq_mesh *m, const char *path, sq_error *err)
+{
+    double t = sq_now();
+    sq_status st;
+    if (sq_api_ends_with(path, ".msh"))
+        st = sq_write_msh(path, m->q, err);
+    else if (sq_api_ends_with(path, ".xml"))
+        st = sq_write_nektar(path, m->q, err);
+    else if (sq_api_ends_with(path, ".vtu"))
+        st = sq_write_quad_vtu(path, m->q, err);
+    else if (sq_api_ends_with(path, ".svg"))
+        st = sq_write_quad_svg(path, m->q, err);
+    else
+        st = SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)", path);
+    *m->t_write += sq_now() - t;
+    return st;
+}
+
+/* The timings as of now: total from the start of the read. */
+static sq_mesh_timings timings(const sq_mesh *m)
+{
+    sq_mesh_timings t = m->t;
+    t.write = *m->t_write;
+    t.total = m->t.read + (sq_now() - m->t0);
+    return t;
+}
+
+sq_status sq_mesh_report(const sq_mesh *m, char **json, sq_error *err)
+{
+    sq_mesh_timings t = timings(m);
+    sq_api_text txt;
+    SQ_TRY(sq_api_text_open(&txt, err));
+    sq_print_mesh_report(txt.fp, m->face.model->path, m->face.model->cad, m->face.index, &m->info,
+                         &m->road, &m->r, m->q, &m->quality, &t);
+    return sq_api_text_close(&txt, json, err);
+}
+
+sq_status sq_mesh_write_report(const sq_mesh *m, const char *path, sq_error *err)
+{
+    sq_mesh_timings t = timings(m);
+    return sq_write_mesh_report(path, m->face.model->path, m->face.model->cad, m->face.index,
+                                &m->info, &m->road, &m->r, m->q, &m->quality, &t, err);
+}
+
+sq_status sq_mesh_describe(const sq_mesh *m, char **text, sq_error *err)
+{
+    char line[256];
+    sq_quad_quality_line(m->q, &m->quality, line, sizeof line);
+    sq_api_text x;
+    SQ_TRY(sq_api_text_open(&x, err));
+    fprintf(x.fp, "%s\n", line);
+    return sq_api_text_close(&x, text, err);
+}
