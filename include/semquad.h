@@ -304,6 +304,10 @@ SQ_API int sq_mesh_num_tags(const sq_mesh *m);
 SQ_API const double *sq_mesh_scaled_jacobians(const sq_mesh *m);
 SQ_API const double *sq_mesh_eta(const sq_mesh *m);
 
+/* The area the quads cover: the sum over quads of the integral of det J
+ * (Gauss quadrature, exact for the element maps); compare with the face's. */
+SQ_API double sq_mesh_area(const sq_mesh *m);
+
 /* The report (docs/formats.md: counts, quality, field, layout, timings)
  * as JSON text in *json (sq_free it), or written to a file. */
 SQ_API sq_status sq_mesh_report(const sq_mesh *m, char **json, sq_error *err);

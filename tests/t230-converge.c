@@ -1,4 +1,4 @@
-/* t230: the convergence study (src/converge.h) on CAD faces.
+/* t230: the convergence study (src/converge/converge.h) on CAD faces.
  *  - half_disc (curved boundary, automatic size), u = e^x sin y, CG and DG,
  *    P = 2..12: the L2 error decreases with P up to the round-off plateau
  *    (each step gains a factor >= 3 while that stays above the solve's

@@ -2,7 +2,7 @@
  * curves) of every example face and of the real CAD files, against
  * ../shared/geometries/README.md and ../shared/geometries/real/README.md.
  * Tolerances (no BLAS): the area is GSL's QAG to 1e-13 relative of each
- * edge's integral (src/face_info.c), exact curves in closed form: 1e-12 for
+ * edge's integral (src/face/face_info.c), exact curves in closed form: 1e-12 for
  * the examples, 1e-6 where the expected value has 7 digits (the real files,
  * naca0012); corner positions are the files' points, to the 1e-9 arc-length
  * slack of cad_face (1e-6 where the README rounds them). */

@@ -71,7 +71,7 @@ int main(void)
     if (a->npoints == 1) {
         const sq_critical_point *p = &a->points[0];
         fails += sq_check_int("disc", "index of the centre", p->index, 4);
-        /* the centre is the circle-mode fit's (src/critical_points.c,
+        /* the centre is the circle-mode fit's (src/field/critical_points.c,
          * fit_degenerate: Vieta, stable under round-off), iterated to 1e-12
          * rho, on a mesh symmetric to round-off: the field's round-off over
          * |c| rho^3 (kappa (3n+1) U, t412): 1e-10; c itself is the fit's

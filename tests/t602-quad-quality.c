@@ -3,7 +3,7 @@
  * an annulus sector (straight eta 1 - dtheta/pi, curved eta 1, area 3π/4
  * exactly by quadrature at Q = 8), a quarter disc with one valence-3
  * vertex; resampling GLL <-> equispaced.
- * Tolerances (no BLAS: 1D Lagrange bases in closed form, src/quad_quality.c;
+ * Tolerances (no BLAS: 1D Lagrange bases in closed form, src/mesh/quad_quality.c;
  * Q <= 10, coordinates <= 2): straight-sided eta from corner angles by a
  * few atan2/acos, a few U of angles <= pi over 90 deg: 1e-13 (1e-12 for
  * the annulus, whose corner coordinates are cos/sin); the curved measures

@@ -116,7 +116,7 @@ int main(void)
             worst = fmax(worst, hypot(xy[2 * ID(i, j)] - (double)i / NU,
                                       xy[2 * ID(i, j) + 1] - (double)j / NV));
     /* the relaxation stops when no vertex moves by 1e-9 of the extent
-     * (src/quad_relax.c, CONVERGED): the fixed point is within 1e-9 / (1 -
+     * (src/mesh/quad_relax.c, CONVERGED): the fixed point is within 1e-9 / (1 -
      * rho) of it, rho the steps' contraction; 1e-8 holds for rho <= 0.9 */
     fails += sq_check_abs("t613", "largest distance to the uniform grid", worst, 0.0, 1e-8);
     /* again, ID(2, 2) held at (0.36, 0.52) */

@@ -1,5 +1,5 @@
 #!/usr/bin/python3
-"""The split road (src/quad_split.c) on every planar example: `semquad mesh
+"""The split road (src/mesh/quad_split.c) on every planar example: `semquad mesh
 --road split` must give an all-quad mesh, valid and conforming, byte for byte
 the same on a second run.
 

@@ -255,6 +255,7 @@ const int *sq_mesh_boundary_sides(const sq_mesh *m) { return m->bnd; }
 int sq_mesh_num_tags(const sq_mesh *m) { return m->q->ntags; }
 const double *sq_mesh_scaled_jacobians(const sq_mesh *m) { return m->sjac; }
 const double *sq_mesh_eta(const sq_mesh *m) { return m->eta; }
+double sq_mesh_area(const sq_mesh *m) { return m->quality.area; }
 
 void sq_mesh_frame(const sq_mesh *m, double origin[3], double xdir[3], double ydir[3])
 {

@@ -68,7 +68,7 @@ void sq_cli_args_init(sq_cli_args *a)
 sq_status sq_cli_take(const char *cmd, int argc, char **argv, int *i, sq_cli_args *a, int *taken,
                       sq_error *err)
 {
-    const char *o = argv[*i], *val;
+    const char *o = argv[*i], *val = NULL;
     *taken = 1;
     if (!strcmp(o, "--face")) {
         SQ_TRY(sq_cli_value(argc, argv, i, &val, err));

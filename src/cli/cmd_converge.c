@@ -1,7 +1,7 @@
 /* semquad converge FILE [--face N] [--solution NAME] [--method cg|dg|both]
  *   [--orders A-B] [--sizes h1,h2,...] [--geom-order G] [--csv out.csv]
  *   [--svg out.svg] [--quiet]: convergence study of the sem/ solvers
- *   (src/converge.h) on a CAD face with an exact harmonic solution. */
+ *   (src/converge/converge.h) on a CAD face with an exact harmonic solution. */
 #include "cli.h"
 
 #include <errno.h>
