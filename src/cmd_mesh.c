@@ -11,11 +11,29 @@
 #include "write_quad_svg.h"
 #include "write_quad_vtu.h"
 
+#include <math.h>
 #include <stdio.h>
 #include <string.h>
 
 /* without --size: halvings of the default size tried when quads fold */
 #define DEFAULT_SIZE_HALVINGS 3
+
+/* Appended to a cusp's refusal: why healing left it, the option that
+ * would blunt it (cad.h: a segment of CAD_CUSP_MIN_SEGMENT of the face's
+ * size at least; the 2D box's diagonal bounds that size from above). */
+static void cusp_hint(const cad_model *model, const sq_face_info *fi, sq_error *err)
+{
+    size_t len = strlen(err->msg);
+    double tol = cad_model_heal_tolerance(model);
+    double need = CAD_CUSP_MIN_SEGMENT * hypot(fi->bbox[2] - fi->bbox[0], fi->bbox[3] - fi->bbox[1]);
+    if (tol <= 0)
+        snprintf(err->msg + len, sizeof err->msg - len, "; --no-heal keeps it (healing blunts it)");
+    else
+        snprintf(err->msg + len, sizeof err->msg - len,
+                 "; healing could not blunt it within the tolerance %.3g (--heal-tolerance %.2g "
+                 "would, if the edges part by that within half their length)",
+                 tol, fmax(1.05 * need, tol * 1.5));
+}
 
 static int ends_with(const char *s, const char *suffix)
 {
@@ -257,7 +275,7 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
     progress(args.quiet, "semquad: read %s", args.input, t.read);
     sq_face_info fi;
     sq_status st = sq_face_info_compute(f, &fi, err);
-    if (st == SQ_OK) st = sq_face_check_cusps(&fi, err);
+    if (st == SQ_OK && (st = sq_face_check_cusps(&fi, err)) != SQ_OK) cusp_hint(model, &fi, err);
     /* a --size that would exhaust memory is refused before any work */
     if (st == SQ_OK && size_given) st = sq_mesher_check_size(fi.area, mo.size, mo.max_quads, err);
     sq_layout_result r;
