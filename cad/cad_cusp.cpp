@@ -111,7 +111,7 @@ bool blunt_one(travel_edge &in, travel_edge &out, const gp_Dir &normal, double t
                sqcad::heal_record &r)
 {
     const gp_Vec tin = travel_tangent(in, in.t1), tout = travel_tangent(out, out.t0);
-    if (tin.Magnitude() <= 0 || tout.Magnitude() <= 0 ||
+    if (tin.Magnitude() <= gp::Resolution() || tout.Magnitude() <= gp::Resolution() ||
         tout.Angle(-tin) * 180.0 / M_PI >= CAD_CUSP_TOL_DEG)
         return false;
     // first travel fraction 2^-k of the outgoing edge (k from 52 down) where
