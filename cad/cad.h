@@ -72,16 +72,30 @@ cad_face_status cad_model_face_status(const cad_model *model, int index, const c
  * or the given one), 0 when healing is off. */
 double cad_model_heal_tolerance(const cad_model *model);
 
+/* Interior angles below this are cusps (degrees): two edges tangent at
+ * their common vertex with the face between them.  Any quad with a corner
+ * there has a zero angle, hence a zero Jacobian: healing blunts them. */
+#define CAD_CUSP_TOL_DEG 1e-3
+
+/* A cusp is blunted only by a segment (the healing tolerance) at least this
+ * fraction of the face's size: the meshers take such a face in under a
+ * minute (36 s at 1e-5 on tests/t336's face), not one far smaller. */
+#define CAD_CUSP_MIN_SEGMENT 1e-5
+
 /* One defect healed on a face: kind "gap" (between the ends of edges
  * edge_a and edge_b of a wire, size its width), "connection" (consecutive
  * edges not sharing their vertex, size the vertices' distance), "small
- * edge" (edge_a, size its length), "degenerated edge" (edge_a), or
- * "self-intersection" (the wire's); at: where, in the file's 3D coordinates.  Wires and edges are numbered as in the file. */
+ * edge" (edge_a, size its length), "degenerated edge" (edge_a),
+ * "self-intersection" (the wire's), or "cusp" (between edges edge_a and
+ * edge_b, blunted: cut[0] and cut[1] cut off them, joined by a segment of
+ * length size); at: where, in the file's 3D coordinates.  Wires and edges
+ * are numbered as in the file. */
 typedef struct {
     const char *kind;
     int wire, edge_a, edge_b; /* -1: none */
     double size;
     double at[3];
+    double cut[2];
 } cad_heal;
 
 int cad_model_face_num_heals(const cad_model *model, int index);

@@ -29,7 +29,10 @@
 //     point of each hole edge is classified against the other loops
 //     (BRepTopAdaptor_FClass2d).  The STEP reader's own healing splits a
 //     file's face whose loops cross into several faces; those are broken
-//     too (cad_model.cpp marks them).
+//     too (cad_model.cpp marks them);
+//  6. between 4 and 5: cusps (consecutive edges tangent at their vertex,
+//     the face between them) are blunted within the healing tolerance
+//     (cad_cusp.cpp), if the blunted face's loops are sound.
 #include "cad_private.hxx"
 
 #include <BRepAdaptor_Curve.hxx>
@@ -373,7 +376,7 @@ std::string check_loops(const TopoDS_Face &face, double prec)
     return why.empty() ? misplaced_hole(face, L, prec) : why;
 }
 
-// Heal face i of the model (design 2-4).
+// Heal face i of the model (design 2-4, then the cusps: design 6).
 void heal_face(cad_model *m, int i, double file_tol, bool given)
 {
     const TopoDS_Face face = TopoDS::Face(m->faces(i + 1));
@@ -382,7 +385,6 @@ void heal_face(cad_model *m, int i, double file_tol, bool given)
     // writer), so that a gap the tolerances hide is still closed and said.
     const double prec = std::min(face_precision(face), 1e-8 * sqcad::face_size(face));
     std::vector<sqcad::heal_record> d = analyse_face(face, prec);
-    if (d.empty()) return;
     // The file's own tolerance for this face: its uncertainty or the face's
     // vertex and edge tolerances, whichever is larger.
     const double tol = given ? file_tol : std::max(m->uncertainty, face_tolerance(face));
@@ -400,16 +402,28 @@ void heal_face(cad_model *m, int i, double file_tol, bool given)
         m->reason[(size_t)i] = buf;
         return;
     }
-    TopoDS_Face healed = fix_face(TopoDS::Face(BRepBuilderAPI_Copy(face).Shape()), prec,
-                                  std::max(tol, prec));
-    std::vector<sqcad::heal_record> left =
-        analyse_face(healed, std::min(std::max(tol, prec), face_precision(healed)));
-    if (!left.empty() || healed.IsNull()) {
-        m->status[(size_t)i] = CAD_FACE_BROKEN;
-        m->reason[(size_t)i] = left.empty() ? std::string("healing gave no face")
-                                            : "healing left a " + describe(left[0], unit);
-        return;
+    TopoDS_Face healed = face;
+    if (!d.empty()) {
+        healed = fix_face(TopoDS::Face(BRepBuilderAPI_Copy(face).Shape()), prec,
+                          std::max(tol, prec));
+        std::vector<sqcad::heal_record> left =
+            analyse_face(healed, std::min(std::max(tol, prec), face_precision(healed)));
+        if (!left.empty() || healed.IsNull()) {
+            m->status[(size_t)i] = CAD_FACE_BROKEN;
+            m->reason[(size_t)i] = left.empty() ? std::string("healing gave no face")
+                                                : "healing left a " + describe(left[0], unit);
+            return;
+        }
     }
+    // Cusps blunted within the tolerance (design 6); kept only if the
+    // blunted face's loops are sound (the new segment crosses nothing).
+    std::vector<sqcad::heal_record> cusps;
+    TopoDS_Face blunted = sqcad::blunt_cusps(healed, tol, prec, cusps);
+    if (!cusps.empty() && check_loops(blunted, std::min(face_precision(blunted), prec)).empty()) {
+        healed = blunted;
+        d.insert(d.end(), cusps.begin(), cusps.end());
+    }
+    if (d.empty()) return;
     m->faces.Substitute(i + 1, healed);
     m->status[(size_t)i] = CAD_FACE_HEALED;
     m->heals[(size_t)i] = d;

@@ -578,6 +578,7 @@ int cad_model_face_heal(const cad_model *model, int index, int k, cad_heal *out)
     out->size = r.size;
     for (int d = 0; d < 3; ++d)
         out->at[d] = r.at[d];
+    out->cut[0] = r.cut[0], out->cut[1] = r.cut[1];
     return 0;
 }
 

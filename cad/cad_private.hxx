@@ -24,6 +24,7 @@ struct heal_record {
     int wire = 0;       // wire of the face, in the file's order
     int edge_a = -1, edge_b = -1; // edges of that wire (-1: none)
     double size = 0;    // gap width or edge length, file unit (0: no size)
+    double cut[2] = {0, 0}; // "cusp": length cut off edges edge_a and edge_b
     double at[3] = {0, 0, 0};
 };
 } // namespace sqcad
@@ -64,6 +65,14 @@ double face_size(const TopoDS_Face &face);
 // tol <= 0: no healing); a planar face in m->split, or whose loops cross
 // or whose holes are not inside its outer loop, is broken.
 void heal_model(cad_model *m, double tol, bool given);
+
+// The planar face with every cusp (two consecutive edges tangent at their
+// vertex, the face between them) blunted within tol: both edges cut where
+// they part by tol and joined by a segment (cad_cusp.cpp); one "cusp"
+// record per blunted cusp appended to out.  The face itself if it has no
+// cusp that can be blunted within tol.
+TopoDS_Face blunt_cusps(const TopoDS_Face &face, double tol, double prec,
+                        std::vector<heal_record> &out);
 
 } // namespace sqcad
 

@@ -11,7 +11,8 @@
 #  - a 500-sided polygon: its triangulation (every corner graded) in seconds;
 #  - a cusp (a rectangle cut by a disc tangent to its side: two edges
 #    tangent at their vertex, interior angle 0): no all-quad mesh with
-#    positive Jacobians exists; refused at once (exit 6, one line naming the
+#    positive Jacobians exists; the file's tolerance (1e-7) is too small to
+#    blunt it (t336), so it is refused at once (exit 6, one line naming the
 #    cusp), neither road tried;
 #  - --max-quads: a size past it is refused before any work (exit 2, one
 #    line, no output file), naming the size that fits.

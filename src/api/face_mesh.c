@@ -8,11 +8,29 @@
 #include "write_quad_svg.h"
 #include "write_quad_vtu.h"
 
+#include <math.h>
 #include <stdlib.h>
 #include <string.h>
 
 /* without --size: halvings of the default size tried when quads fold */
 #define DEFAULT_SIZE_HALVINGS 3
+
+/* Appended to a cusp's refusal: why healing left it, the option that
+ * would blunt it (cad.h: a segment of CAD_CUSP_MIN_SEGMENT of the face's
+ * size at least; the 2D box's diagonal bounds that size from above). */
+static void cusp_hint(const cad_model *model, const sq_face_info *fi, sq_error *err)
+{
+    size_t len = strlen(err->msg);
+    double tol = cad_model_heal_tolerance(model);
+    double need = CAD_CUSP_MIN_SEGMENT * hypot(fi->bbox[2] - fi->bbox[0], fi->bbox[3] - fi->bbox[1]);
+    if (tol <= 0)
+        snprintf(err->msg + len, sizeof err->msg - len, "; --no-heal keeps it (healing blunts it)");
+    else
+        snprintf(err->msg + len, sizeof err->msg - len,
+                 "; healing could not blunt it within the tolerance %.3g (--heal-tolerance %.2g "
+                 "would, if the edges part by that within half their length)",
+                 tol, fmax(1.05 * need, tol * 1.5));
+}
 
 /* Falls back on the split road (quad_split.h): what the layout road could
  * not do on a face the split road may mesh; not a usage, input or output
@@ -211,7 +229,8 @@ sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_
     free(healed);
     if (st == SQ_OK) sq_api_log(o, SQ_LOG_INFO, "read %s (%.3f s)", model->path, model->t_read);
     if (st == SQ_OK) st = sq_face_info_compute(h->face.cad, &h->info, err);
-    if (st == SQ_OK) st = sq_face_check_cusps(&h->info, err);
+    if (st == SQ_OK && (st = sq_face_check_cusps(&h->info, err)) != SQ_OK)
+        cusp_hint(model->cad, &h->info, err);
     /* a size that would exhaust memory is refused before any work */
     if (st == SQ_OK && o->size > 0.0)
         st = sq_mesher_check_size(h->info.area, mo.size, mo.max_quads, err);

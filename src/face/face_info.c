@@ -201,6 +201,10 @@ void sq_heal_text(const cad_heal *h, const char *unit_name, char *buf, size_t n)
     else if (!strcmp(h->kind, "small edge"))
         snprintf(buf, n, "merged edge %d of wire %d, %.3g%s long, at (%.6g, %.6g, %.6g)", h->edge_a,
                  h->wire, h->size, unit, p[0], p[1], p[2]);
+    else if (!strcmp(h->kind, "cusp"))
+        snprintf(buf, n, "blunted a cusp between edges %d and %d of wire %d at (%.6g, %.6g, %.6g): cut %.3g%s and %.3g%s off them, joined by a %.3g%s segment",
+                 h->edge_a, h->edge_b, h->wire, p[0], p[1], p[2], h->cut[0], unit, h->cut[1], unit,
+                 h->size, unit);
     else
         snprintf(buf, n, "fixed a %s in wire %d", h->kind, h->wire);
 }
@@ -223,6 +227,13 @@ void sq_json_healing(sq_json *j, const cad_model *m, int face)
         if (h.edge_b >= 0) sq_json_int(j, h.edge_b);
         sq_json_end_array(j);
         sq_json_key_number(j, "size", h.size);
+        if (!strcmp(h.kind, "cusp")) { /* lengths cut off edge_a and edge_b */
+            sq_json_key(j, "cut");
+            sq_json_begin_array(j);
+            sq_json_number(j, h.cut[0]);
+            sq_json_number(j, h.cut[1]);
+            sq_json_end_array(j);
+        }
         sq_json_key(j, "at");
         sq_json_begin_array(j);
         for (int d = 0; d < 3; d++)

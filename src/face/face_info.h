@@ -43,7 +43,7 @@ sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_erro
  * their common vertex with the face between them.  Any quad with a corner
  * there has a zero angle, hence a zero Jacobian: the face has no valid
  * all-quad mesh.  (CAD tangency holds to about 1e-7 rad, far below.) */
-#define SQ_CUSP_TOL_DEG 1e-3
+#define SQ_CUSP_TOL_DEG CAD_CUSP_TOL_DEG
 
 /* SQ_ERR_LAYOUT, naming where and why, if the face has a cusp. */
 sq_status sq_face_check_cusps(const sq_face_info *info, sq_error *err);
