@@ -178,8 +178,12 @@ SQ_API sq_status sq_options_check(const sq_options *o, sq_error *err);
 
 typedef struct sq_model sq_model;
 
-/* Read a STEP, IGES or BREP file (by content, not extension), healing it
- * as opt says (NULL: defaults).  SQ_ERR_INPUT if the file cannot be read. */
+/* Read a STEP (.step/.stp), IGES (.iges/.igs) or BREP (.brep/.brp) file,
+ * by its extension, healing it as opt says (NULL: defaults); opt's logger
+ * serves sq_model_info.  SQ_ERR_INPUT if the file cannot be read.  Turns
+ * GSL's aborting error handler off and installs OpenCASCADE's signal
+ * handlers (OSD::SetSignal), process-wide, so that a hostile file gives an
+ * error, not a crash. */
 SQ_API sq_status sq_model_open(const char *path, const sq_options *opt, sq_model **out,
                                sq_error *err);
 SQ_API void sq_model_free(sq_model **m);
@@ -187,8 +191,8 @@ SQ_API void sq_model_free(sq_model **m);
 /* Number of faces; faces are numbered 0..n-1 in the file's order. */
 SQ_API int sq_model_num_faces(const sq_model *m);
 
-/* The face a command meshes when none is named: the only planar face, or
- * the largest planar one (*why, if not NULL, then says so; else NULL). */
+/* The face a command meshes when none is named: the only planar face,
+ * else face 0 (*why, if not NULL, then says so; else NULL). */
 SQ_API int sq_model_default_face(const sq_model *m, const char **why);
 
 /* The file's length unit ("mm", "m", "inch", ...) and healing tolerance. */
