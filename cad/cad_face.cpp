@@ -514,8 +514,9 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
             if (gap > gap_tol)
                 return SQ_FAIL(err, SQ_ERR_GEOMETRY,
                                "face %d: loop %d is not closed: edge %d ends %.3g away from the "
-                               "start of edge %d",
-                               index, l, n0 + k, gap, n0 + (k + 1) % cnt);
+                               "start of edge %d, beyond the closure tolerance %.3g (healing "
+                               "with --heal-tolerance %.2g would close it)",
+                               index, l, n0 + k, gap, n0 + (k + 1) % cnt, gap_tol, 1.5 * gap);
         }
     }
     // Shared corners: each junction gets the mid-point of the two curve ends,
