@@ -11,7 +11,8 @@
 //     edges skipped, each edge travelled along its orientation in the wire;
 //  3. arc length: per edge a table of (parameter, arc length) from adaptive
 //     10-point Gauss-Legendre quadrature of |C'(u)| on the curve's C2
-//     intervals; s -> u by Newton steps inside one table interval;
+//     intervals, a piece halved until its halves agree to 1e-15 of it or
+//     of the edge's length; s -> u by Newton steps inside one table interval;
 //  4. orientation: signed area by Green's theorem; if the outer loop is
 //     negative, it is reversed (plane z = const, normal -z) or the frame is
 //     mirrored (Y -> -Y, other planes); a positive hole is reversed;
@@ -91,19 +92,24 @@ double gl_length(const Edge &e, double a, double b)
     return sum * h;
 }
 
-void adapt(Edge &e, double a, double b, double whole, int depth)
+// Halve [a, b] until the two halves' lengths add up to the whole's to
+// 1e-15 of it, or to tol: a piece's share of the edge's round-off (the
+// speeds carry the round-off of the curve's evaluation, often far above
+// 1e-15 of the piece on scaled or off-origin curves, and a relative rule
+// alone then halves to the depth bound: 2^24 pieces).
+void adapt(Edge &e, double a, double b, double whole, double tol, int depth)
 {
     double m = 0.5 * (a + b);
     double l = gl_length(e, a, m), r = gl_length(e, m, b);
-    if (depth >= 24 || std::fabs(l + r - whole) <= 1e-15 * std::max(whole, 1e-300) + 1e-300) {
+    if (depth >= 24 || std::fabs(l + r - whole) <= std::max(1e-15 * whole, tol) + 1e-300) {
         e.tu.push_back(m);
         e.ts.push_back(e.ts.back() + l);
         e.tu.push_back(b);
         e.ts.push_back(e.ts.back() + r);
         return;
     }
-    adapt(e, a, m, l, depth + 1);
-    adapt(e, m, b, r, depth + 1);
+    adapt(e, a, m, l, tol, depth + 1);
+    adapt(e, m, b, r, tol, depth + 1);
 }
 
 // The ends of the curve's C2 intervals inside [u0, u1], u0 and u1 included.
@@ -123,16 +129,24 @@ std::vector<double> smooth_breaks(const Edge &e)
 void build_table(Edge &e)
 {
     const std::vector<double> br = smooth_breaks(e);
-    e.tu.assign(1, e.u0);
-    e.ts.assign(1, 0.0);
+    const int split = 4; // start with 4 pieces per smooth interval
+    std::vector<double> pa, pb, whole;
+    double length = 0;
     for (size_t k = 0; k + 1 < br.size(); ++k) {
-        const int split = 4; // start with 4 pieces per smooth interval
         double a = br[k], h = (br[k + 1] - br[k]) / split;
         for (int j = 0; j < split; ++j) {
-            double pa = a + j * h, pb = j + 1 == split ? br[k + 1] : a + (j + 1) * h;
-            adapt(e, pa, pb, gl_length(e, pa, pb), 0);
+            pa.push_back(a + j * h);
+            pb.push_back(j + 1 == split ? br[k + 1] : a + (j + 1) * h);
+            whole.push_back(gl_length(e, pa.back(), pb.back()));
+            length += whole.back();
         }
     }
+    e.tu.assign(1, e.u0);
+    e.ts.assign(1, 0.0);
+    // 1e-15 of the edge's length per piece: about 4 ulps, reached once the
+    // pieces are short enough for their round-off to fall below it
+    for (size_t k = 0; k < pa.size(); ++k)
+        adapt(e, pa[k], pb[k], whole[k], 1e-15 * length, 0);
     e.length = e.ts.back();
 }
 
@@ -500,8 +514,9 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
             if (gap > gap_tol)
                 return SQ_FAIL(err, SQ_ERR_GEOMETRY,
                                "face %d: loop %d is not closed: edge %d ends %.3g away from the "
-                               "start of edge %d",
-                               index, l, n0 + k, gap, n0 + (k + 1) % cnt);
+                               "start of edge %d, beyond the closure tolerance %.3g (healing "
+                               "with --heal-tolerance %.2g would close it)",
+                               index, l, n0 + k, gap, n0 + (k + 1) % cnt, gap_tol, 1.5 * gap);
         }
     }
     // Shared corners: each junction gets the mid-point of the two curve ends,

@@ -397,7 +397,8 @@ void heal_face(cad_model *m, int i, double file_tol, bool given)
             std::snprintf(buf, sizeof buf, "%s exceeds the healing tolerance %.3g%s (--heal-tolerance %.2g would allow it)",
                           describe(*r, unit).c_str(), tol, unit, 1.5 * r->size);
         else
-            std::snprintf(buf, sizeof buf, "%s cannot be healed", describe(*r, unit).c_str());
+            std::snprintf(buf, sizeof buf, "%s cannot be healed (healing tolerance %.3g%s; --no-heal takes the face as read)",
+                          describe(*r, unit).c_str(), tol, unit);
         m->status[(size_t)i] = CAD_FACE_BROKEN;
         m->reason[(size_t)i] = buf;
         return;
@@ -406,12 +407,20 @@ void heal_face(cad_model *m, int i, double file_tol, bool given)
     if (!d.empty()) {
         healed = fix_face(TopoDS::Face(BRepBuilderAPI_Copy(face).Shape()), prec,
                           std::max(tol, prec));
-        std::vector<sqcad::heal_record> left =
-            analyse_face(healed, std::min(std::max(tol, prec), face_precision(healed)));
+        const double after = std::min(std::max(tol, prec), face_precision(healed));
+        std::vector<sqcad::heal_record> left = analyse_face(healed, after);
         if (!left.empty() || healed.IsNull()) {
+            // a defect within the tolerance that the fix left (an edge that became
+            // small when closing gaps grew the tolerances): no tolerance allows it
+            char buf[700];
+            if (left.empty())
+                std::snprintf(buf, sizeof buf, "healing gave no face (healing tolerance %.3g%s; --no-heal takes the face as read)",
+                              tol, unit);
+            else
+                std::snprintf(buf, sizeof buf, "healing left a %s, at the precision %.3g%s of the healed edges, within the healing tolerance %.3g%s (--no-heal takes the face as read)",
+                              describe(left[0], unit).c_str(), after, unit, tol, unit);
             m->status[(size_t)i] = CAD_FACE_BROKEN;
-            m->reason[(size_t)i] = left.empty() ? std::string("healing gave no face")
-                                                : "healing left a " + describe(left[0], unit);
+            m->reason[(size_t)i] = buf;
             return;
         }
     }
@@ -464,7 +473,7 @@ void heal_model(cad_model *m, double tol, bool given)
         } catch (const Standard_Failure &e) {
             m->status[(size_t)i] = CAD_FACE_BROKEN;
             m->reason[(size_t)i] = std::string("healing failed (OpenCASCADE ") +
-                                   e.DynamicType()->Name() + ")";
+                                   e.DynamicType()->Name() + "; --no-heal takes the face as read)";
         }
     }
 }

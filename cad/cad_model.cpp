@@ -5,8 +5,8 @@
 //     file exists and is not empty;
 //  2. read with OpenCASCADE with its messenger silenced (scoped: the printers
 //     are restored afterwards), keeping lengths in the file's own unit
-//     (STEP: the reader's system length unit is set to the file's unit;
-//     IGES: the global section's cascade unit is set to the file's unit);
+//     (STEP: read in millimetres, as Gmsh does, then scaled to the file's
+//     unit; IGES: the global section's cascade unit is set to the file's unit);
 //  3. enumerate the faces with TopExp::MapShapes and classify their surfaces.
 #include "cad_private.hxx"
 
@@ -153,8 +153,9 @@ double iges_flag_mm(int flag)
 // The reader's healing (ShapeFix) splits a face of the file whose loops
 // cross, or whose hole lies outside its outline, into several valid faces:
 // meshing one of them would mesh another face than the file's, so each is
-// marked (heal_model makes it broken).
-void mark_split_faces(STEPControl_Reader &reader, cad_model *m)
+// marked (heal_model makes it broken).  to_unit maps the reader's faces to
+// the model's (the scaling to the file's unit), NULL if none.
+void mark_split_faces(STEPControl_Reader &reader, BRepBuilderAPI_Transform *to_unit, cad_model *m)
 {
     Handle(StepData_StepModel) model = reader.StepModel();
     Handle(Transfer_TransientProcess) tp = reader.WS()->TransferReader()->TransientProcess();
@@ -170,7 +171,8 @@ void mark_split_faces(STEPControl_Reader &reader, cad_model *m)
                       "its outer loop (OpenCASCADE's reader split it into %d faces)",
                       model->IdentLabel(f), n);
         for (TopExp_Explorer ex(s, TopAbs_FACE); ex.More(); ex.Next())
-            m->split.push_back(std::make_pair(ex.Current(), std::string(buf)));
+            m->split.push_back(std::make_pair(
+                to_unit ? to_unit->ModifiedShape(ex.Current()) : ex.Current(), std::string(buf)));
     }
 }
 
@@ -184,12 +186,12 @@ sq_status read_step(const char *path, cad_model *m, sq_error *err)
     double mm = -1;
     for (int i = 1; i <= lengths.Length() && mm <= 0; ++i)
         mm = step_unit_mm(lengths(i).ToCString());
-    if (mm > 0) {
-        reader.SetSystemLengthUnit(mm); // keep lengths in the file's unit
-        m->unit = unit_from_mm(mm);
-    } else {
-        m->unit = "mm"; // unknown unit: OpenCASCADE's millimetres
-    }
+    // Read in millimetres, the reader's own unit, as Gmsh does: the reader's
+    // healing (ShapeFix_Face's FixSplitFace) splits a face or not on the
+    // round-off of the coordinates, so reading in another unit may list
+    // another number of faces than Gmsh (as_tie_rod.step, inch: 67, not 68).
+    // The shape is then scaled to the file's unit.
+    m->unit = mm > 0 ? unit_from_mm(mm) : "mm"; // unknown unit: millimetres
     Handle(StepData_StepModel) model = reader.StepModel();
     for (int i = 1; !model.IsNull() && i <= model->NbEntities(); ++i) {
         Handle(StepBasic_UncertaintyMeasureWithUnit) u =
@@ -211,7 +213,15 @@ sq_status read_step(const char *path, cad_model *m, sq_error *err)
                        path, why.empty() ? "" : " (", why.c_str(), why.empty() ? "" : ")");
     }
     m->shape = reader.OneShape();
-    mark_split_faces(reader, m);
+    if (!(mm > 0) || mm == 1.0) {
+        mark_split_faces(reader, NULL, m);
+        return SQ_OK;
+    }
+    gp_Trsf scale;
+    scale.SetScale(gp_Pnt(0, 0, 0), 1.0 / mm);
+    BRepBuilderAPI_Transform to_unit(m->shape, scale, Standard_True);
+    m->shape = to_unit.Shape();
+    mark_split_faces(reader, &to_unit, m);
     return SQ_OK;
 }
 

@@ -1,13 +1,14 @@
-"""Test helper: a STEP file of one planar face in z = 0 (mm), written as text
-(AP214: lines and circles; no p-curves, the reader makes them), so that tests
-build their own faces without Gmsh."""
+"""Test helper: a STEP file of one planar face in z = 0 (mm or inch), written
+as text (AP214: lines, circles and cubic B-splines; no p-curves, the reader
+makes them), so that tests build their own faces without Gmsh."""
 
 
 class Step:
-    """Minimal AP214 writer of one planar face in z = 0 (mm)."""
+    """Minimal AP214 writer of one planar face in z = 0, in mm or inch."""
 
-    def __init__(self):
+    def __init__(self, unit="mm"):
         self.ents = []
+        self.unit = unit
 
     @staticmethod
     def real(x):
@@ -49,12 +50,46 @@ class Step:
         ec = self.add("EDGE_CURVE('',%s,%s,%s,.T.)" % (v, v, c))
         return self.add("EDGE_LOOP('',(%s))" % self.add("ORIENTED_EDGE('',*,*,%s,.F.)" % ec))
 
+    def line(self, v0, v1, p, q):
+        """An oriented edge: the line from p to q, vertices v0, v1."""
+        dx, dy = q[0] - p[0], q[1] - p[1]
+        ln = (dx * dx + dy * dy) ** 0.5
+        vec = self.add("VECTOR('',%s,%s)" % (self.dirn(dx / ln, dy / ln), self.real(ln)))
+        ec = self.add("EDGE_CURVE('',%s,%s,%s,.T.)" % (v0, v1, self.add("LINE('',%s,%s)" % (self.pt(*p), vec))))
+        return self.add("ORIENTED_EDGE('',*,*,%s,.T.)" % ec)
+
+    def bspline_loop(self, poles, weights=None, knots=None):
+        """A cubic B-spline (clamped; knots: its n + 1 distinct knots, by
+        default 0, 1, ..., n; weights: rational) from the first pole to the
+        last, closed by a line back."""
+        v0 = self.add("VERTEX_POINT('',%s)" % self.pt(*poles[0]))
+        v1 = self.add("VERTEX_POINT('',%s)" % self.pt(*poles[-1]))
+        n = len(poles) - 3  # knot spans
+        curve = "B_SPLINE_CURVE(3,(%s),.UNSPECIFIED.,.F.,.F.)" % ",".join(self.pt(*p) for p in poles)
+        with_knots = "B_SPLINE_CURVE_WITH_KNOTS((%s),(%s),.UNSPECIFIED.)" % (
+            ",".join(["4"] + ["1"] * (n - 1) + ["4"]),
+            ",".join(self.real(k) for k in (knots or range(n + 1))))
+        rational = "RATIONAL_B_SPLINE_CURVE((%s))" % ",".join(map(self.real, weights)) if weights else ""
+        bsp = self.add("( BOUNDED_CURVE() %s %s CURVE() GEOMETRIC_REPRESENTATION_ITEM() %s "
+                       "REPRESENTATION_ITEM('') )" % (curve, with_knots, rational))
+        ec = self.add("EDGE_CURVE('',%s,%s,%s,.T.)" % (v0, v1, bsp))
+        oes = [self.add("ORIENTED_EDGE('',*,*,%s,.T.)" % ec), self.line(v1, v0, poles[-1], poles[0])]
+        return self.add("EDGE_LOOP('',(%s))" % ",".join(oes))
+
+    def length_unit(self):
+        mm = self.add("( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) )")
+        if self.unit == "mm":
+            return mm
+        m = self.add("LENGTH_MEASURE_WITH_UNIT(LENGTH_MEASURE(25.4),%s)" % mm)
+        d = self.add("DIMENSIONAL_EXPONENTS(1.,0.,0.,0.,0.,0.,0.)")
+        return self.add("( CONVERSION_BASED_UNIT('INCH',%s) LENGTH_UNIT() NAMED_UNIT(%s) )" % (m, d))
+
     def write(self, path, loops):
         bounds = [self.add("%s('',%s,.T.)" % ("FACE_OUTER_BOUND" if i == 0 else "FACE_BOUND", l))
                   for i, l in enumerate(loops)]
         face = self.add("ADVANCED_FACE('',(%s),%s,.T.)" % (",".join(bounds),
                                                            self.add("PLANE('',%s)" % self.axis(0, 0))))
-        mm = self.add("( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) )")
+        mm = self.length_unit()
         rad = self.add("( NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.) )")
         sr = self.add("( NAMED_UNIT(*) SI_UNIT($,.STERADIAN.) SOLID_ANGLE_UNIT() )")
         unc = self.add("UNCERTAINTY_MEASURE_WITH_UNIT(LENGTH_MEASURE(1.E-07),%s,"
@@ -79,7 +114,7 @@ class Step:
             fh.write("ENDSEC;\nEND-ISO-10303-21;\n")
 
 
-def step_face(path, loops):
+def step_face(path, loops, unit="mm"):
     """loops: polygons [(x, y), ...] (the first counter-clockwise) or ('circle', cx, cy, r)."""
-    s = Step()
+    s = Step(unit)
     s.write(path, [s.circle(*l[1:]) if l[0] == "circle" else s.polygon(l) for l in loops])

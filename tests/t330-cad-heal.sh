@@ -67,10 +67,12 @@ grep -q "face 0: gap of 0.01 mm between edges .* exceeds the healing tolerance .
     >/dev/null 2>"$tmp/err" || fail "g2 --heal-tolerance 0.02 failed: $(cat "$tmp/err")"
 grep -q '"inverted": 0' "$tmp/r.json" || fail "g2 --heal-tolerance: inverted quads"
 
-# --no-heal: the face as read; its own closure check refuses the 1e-5 gap
+# --no-heal: the face as read; its own closure check refuses the 1e-5 gap,
+# naming its tolerance and the option that would close it
 "$sq" mesh "$tmp/g5.step" --no-heal -o "$tmp/n.msh" >/dev/null 2>"$tmp/err"
 rc=$?
-[ "$rc" -eq 4 ] && grep -q "is not closed" "$tmp/err" ||
+[ "$rc" -eq 4 ] && grep -q "is not closed" "$tmp/err" &&
+    grep -q "beyond the closure tolerance .* (healing with --heal-tolerance 1.5e-05 would close it)" "$tmp/err" ||
     fail "g5 --no-heal: exit $rc, expected 4 'not closed': $(cat "$tmp/err")"
 [ -e "$tmp/n.msh" ] && fail "g5 --no-heal: left an output file"
 

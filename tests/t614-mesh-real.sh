@@ -5,7 +5,8 @@
 # itself (its curved quads folded at the leading edge, and the size was
 # halved, while a boundary side covering half its CAD edge or more had its
 # nodes placed the other way round the curve), the circle-square's second
-# face (4), and the T106 cascade (4 + 1 kept pair).  Skipped (77) where the
+# face (4), and the T106 cascade (4 + 1 kept pair, named in the report;
+# the minimal pattern imposed: exit 5).  Skipped (77) where the
 # files are absent.
 # usage: t614-mesh-real.sh SEMQUAD REAL_DIR
 set -u
@@ -40,5 +41,32 @@ grep -q '"gauss_bonnet_min": *4,' "$tmp/t.json" || fail "T106: Gauss-Bonnet mini
 grep -q '"kept_pairs": *1,' "$tmp/t.json" || fail "T106: not 1 kept pair"
 grep -q '"irregular_interior_vertices": *6,' "$tmp/t.json" || fail "T106: not 6 irregular"
 grep -q '"inverted": *0,' "$tmp/t.json" || fail "T106: inverted quads"
+# the kept pair named: its two points, their distance, and why (the H/θ
+# field of the 4 other points fails the solver's Neumann balance); the
+# distance is the points' own to round-off (1e-12 of the face's size 1)
+/usr/bin/python3 - "$tmp/t.json" <<'EOF' || fail "T106: kept pair not named"
+import json, math, sys
+L = json.load(open(sys.argv[1]))["layout"]
+k = L["kept_pair_list"]
+assert len(k) == 1, k
+a, b = k[0]["valence3"], k[0]["valence5"]
+assert abs(math.hypot(a[0] - b[0], a[1] - b[1]) - k[0]["distance"]) < 1e-12, k
+assert "no valid H/theta layout of fewer points" in k[0]["reason"], k
+EOF
+# that pattern imposed (the 4 valence-5 points): exit 5 (pattern), one
+# line, no file (it was exit 2, a usage error)
+/usr/bin/python3 - "$tmp/t.json" > "$tmp/min.txt" <<'EOF'
+import json, sys
+d = json.load(open(sys.argv[1]))
+for s in d["singularities"]:
+    if s["valence"] == 5 and [s["x"], s["y"]] != d["layout"]["kept_pair_list"][0]["valence5"]:
+        print("%.17g %.17g 5" % (s["x"], s["y"]))
+EOF
+"$sq" mesh "$real/real_t106_cascade.step" --singularities "$tmp/min.txt" -q -o "$tmp/m.msh" \
+    2>"$tmp/err"
+st=$?
+[ $st -eq 5 ] || fail "T106, minimal pattern: exit $st, not 5: $(cat "$tmp/err")"
+[ "$(wc -l < "$tmp/err")" -eq 1 ] || fail "T106, minimal pattern: not one line on stderr"
+[ -e "$tmp/m.msh" ] && fail "T106, minimal pattern: output file written"
 
 [ "$fails" -eq 0 ]

@@ -74,19 +74,26 @@ sq_status sq_elementary_points(const cad_face *face, const sq_field_analysis *a,
     return SQ_OK;
 }
 
+/* The nearest valence-3/valence-5 pair closer than near among the points
+ * not used (used NULL: all); 0 if none. */
+static int nearest_pair(const sq_singularity *s, int n, const char *used, double near, int *bi,
+                        int *bj)
+{
+    double bd = near;
+    *bi = *bj = -1;
+    for (int i = 0; i < n; i++)
+        for (int j = 0; j < n; j++)
+            if (s[i].valence == 3 && s[j].valence == 5 && !(used && (used[i] || used[j]))) {
+                const double d = hypot(s[i].x - s[j].x, s[i].y - s[j].y);
+                if (d < bd) bd = d, *bi = i, *bj = j;
+            }
+    return *bi >= 0;
+}
+
 int sq_cancel_pairs(sq_singularity *s, int *n, double near)
 {
-    int count = 0;
-    for (;;) {
-        int bi = -1, bj = -1;
-        double bd = near;
-        for (int i = 0; i < *n; i++)
-            for (int j = 0; j < *n; j++)
-                if (s[i].valence == 3 && s[j].valence == 5) {
-                    const double d = hypot(s[i].x - s[j].x, s[i].y - s[j].y);
-                    if (d < bd) bd = d, bi = i, bj = j;
-                }
-        if (bi < 0) return count;
+    int count = 0, bi, bj;
+    while (nearest_pair(s, *n, NULL, near, &bi, &bj)) {
         /* remove both, keeping the order of the others */
         const int lo = bi < bj ? bi : bj, hi = bi < bj ? bj : bi;
         memmove(&s[hi], &s[hi + 1], sizeof *s * (size_t)(*n - hi - 1));
@@ -94,4 +101,22 @@ int sq_cancel_pairs(sq_singularity *s, int *n, double near)
         *n -= 2;
         count++;
     }
+    return count;
+}
+
+sq_status sq_list_pairs(const sq_singularity *s, int n, int max, int (*pairs)[2], int *npairs,
+                        sq_error *err)
+{
+    char *used = calloc((size_t)n + 1, 1);
+    if (!used) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    int bi, bj;
+    *npairs = 0;
+    while (*npairs < max && nearest_pair(s, n, used, HUGE_VAL, &bi, &bj)) {
+        used[bi] = used[bj] = 1;
+        pairs[*npairs][0] = bi;
+        pairs[*npairs][1] = bj;
+        ++*npairs;
+    }
+    free(used);
+    return SQ_OK;
 }

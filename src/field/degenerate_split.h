@@ -40,4 +40,11 @@ sq_status sq_elementary_points(const cad_face *face, const sq_field_analysis *a,
  * others keep their order.  Returns the pairs removed. */
 int sq_cancel_pairs(sq_singularity *s, int *n, double near);
 
+/* The first (at most max) valence-3/valence-5 pairs of s that
+ * sq_cancel_pairs(s, n, HUGE_VAL) would remove, nearest first: pairs[k][0]
+ * the valence-3 point, [1] the valence-5 one (indices into s), *npairs of
+ * them. */
+sq_status sq_list_pairs(const sq_singularity *s, int n, int max, int (*pairs)[2], int *npairs,
+                        sq_error *err);
+
 #endif

@@ -5,6 +5,7 @@
 #include "tri_quad.h"
 
 #include <math.h>
+#include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
 
@@ -168,7 +169,19 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
     out->ndofs = sem_poisson_ndofs(solver);
     if ((st = sem_field_create(mesh, order, 1, &out->hr, err)) != SQ_OK) goto done;
     sem_poisson_data data = {NULL, NULL, hr_flux, &b, nps, ps};
-    if ((st = sem_poisson_solve(solver, &data, out->hr, err)) != SQ_OK) goto done;
+    if ((st = sem_poisson_solve(solver, &data, out->hr, err)) != SQ_OK) {
+        /* the solver's own quadrature of the data found them unbalanced:
+         * a property of this pattern on this face, not a usage error */
+        if (st == SQ_ERR_USAGE && err) {
+            char why[sizeof err->msg];
+            snprintf(why, sizeof why, "%s", err->msg);
+            st = SQ_FAIL(err, SQ_ERR_PATTERN,
+                         "the H field of this pattern cannot be solved: %s (the field's "
+                         "quadrature does not resolve the boundary's curvature)",
+                         why);
+        }
+        goto done;
+    }
     if ((st = b.st) != SQ_OK) goto done;
     if ((st = sem_field_evaluator_create(out->hr, loc, &out->ev, err)) != SQ_OK) goto done;
     /* zero mean of H = H_s + H_r (H_r has zero mean already) */

@@ -17,6 +17,33 @@ static const char *role_origin(const sq_layout *L, int k)
     }
 }
 
+static void json_point(sq_json *j, const char *key, double x, double y)
+{
+    sq_json_key(j, key);
+    sq_json_begin_array(j);
+    sq_json_number(j, x);
+    sq_json_number(j, y);
+    sq_json_end_array(j);
+}
+
+/* The valence-3/valence-5 pairs kept over the Gauss–Bonnet minimum, where
+ * and why (issue 14: a report names the pairs it had to keep). */
+static void json_kept_pairs(sq_json *j, const sq_layout_result *r)
+{
+    sq_json_key(j, "kept_pair_list");
+    sq_json_begin_array(j);
+    for (int k = 0; k < r->nkept; k++) {
+        const sq_kept_pair *p = &r->kept[k];
+        sq_json_begin_object(j);
+        json_point(j, "valence3", p->x3, p->y3);
+        json_point(j, "valence5", p->x5, p->y5);
+        sq_json_key_number(j, "distance", p->distance);
+        sq_json_key_string(j, "reason", r->report.kept_why);
+        sq_json_end_object(j);
+    }
+    sq_json_end_array(j);
+}
+
 static void json_layout_keys(sq_json *j, const sq_layout_result *r)
 {
     const sq_layout *L = &r->layout;
@@ -73,6 +100,7 @@ static void json_layout_keys(sq_json *j, const sq_layout_result *r)
     sq_json_key_int(j, "cancelled_pairs", rep->cancelled_pairs);
     sq_json_key_int(j, "kept_pairs",
                     r->nsing > rep->gauss_bonnet_min ? (r->nsing - rep->gauss_bonnet_min) / 2 : 0);
+    json_kept_pairs(j, r);
     sq_json_key_int(j, "unresolved_points", rep->unresolved);
     sq_json_key(j, "two_step");
     sq_json_bool(j, rep->two_step);

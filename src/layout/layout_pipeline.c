@@ -49,6 +49,7 @@ void sq_layout_result_free(sq_layout_result *r)
     sq_separatrix_set_free(&r->traced);
     free(r->sing);
     free(r->vertex_quads);
+    free(r->kept);
     sq_field_analysis_free(&r->analysis);
     memset(r, 0, sizeof *r);
 }
@@ -196,6 +197,10 @@ static sq_status two_step(const cad_face *face, const sq_layout_options *opt,
     if (!poor) {
         st = attempt(face, opt, NULL, 1, out, err);
         tried_guiding = 1;
+        snprintf(rep->kept_why, sizeof rep->kept_why,
+                 "farther apart than %g (the field's element size, within which pairs are "
+                 "cancelled) on a valid guiding layout",
+                 sq_tri_size(&tri, a->info.area));
         if (st == SQ_OK) goto done;
         snprintf(rep->reason, sizeof rep->reason, "no valid layout on the guiding field: %.120s",
                  err->msg);
@@ -222,6 +227,8 @@ static sq_status two_step(const cad_face *face, const sq_layout_options *opt,
         st = SQ_OK;
         goto done;
     }
+    snprintf(rep->kept_why, sizeof rep->kept_why, "no valid H/theta layout of fewer points: %s",
+             e.msg);
     if (valid1) {
         rep->pattern = 1;
         st = attempt(face, opt, &pats[1], 1, out, err);
@@ -264,6 +271,26 @@ static sq_status analyse(const cad_face *face, const sq_field_options *fo, sq_fi
     return SQ_OK;
 }
 
+/* The pairs of the pattern traced over the Gauss–Bonnet minimum. */
+static sq_status kept_pairs(sq_layout_result *out, sq_error *err)
+{
+    const int max = (out->nsing - out->report.gauss_bonnet_min) / 2;
+    if (max <= 0) return SQ_OK;
+    int(*pairs)[2] = malloc(sizeof *pairs * (size_t)max);
+    out->kept = malloc(sizeof *out->kept * (size_t)max);
+    if (!pairs || !out->kept) {
+        free(pairs);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    sq_status st = sq_list_pairs(out->sing, out->nsing, max, pairs, &out->nkept, err);
+    for (int k = 0; st == SQ_OK && k < out->nkept; k++) {
+        const sq_singularity *a = &out->sing[pairs[k][0]], *b = &out->sing[pairs[k][1]];
+        out->kept[k] = (sq_kept_pair){a->x, a->y, b->x, b->y, hypot(a->x - b->x, a->y - b->y)};
+    }
+    free(pairs);
+    return st;
+}
+
 sq_status sq_layout_run(const cad_face *face, const sq_layout_options *opt, sq_layout_result *out,
                         sq_error *err)
 {
@@ -287,7 +314,11 @@ sq_status sq_layout_run(const cad_face *face, const sq_layout_options *opt, sq_l
         return st;
     }
     out->report.gauss_bonnet_min = gauss_bonnet_min(out->info, out->vertex_quads);
-    return st;
+    if (opt->singularities)
+        snprintf(out->report.kept_why, sizeof out->report.kept_why, "imposed (%s)",
+                 natural ? "--singularities natural" : "pattern file");
+    sq_status ks = kept_pairs(out, err);
+    return ks != SQ_OK ? ks : st;
 }
 
 int sq_layout_note(const sq_layout_result *r, char *buf, size_t n)

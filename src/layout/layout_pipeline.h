@@ -50,7 +50,16 @@ typedef struct {
                              2 the Gauss–Bonnet-minimal pattern (every pair cancelled),
                              3 a pattern file */
     char reason[200];     /* why the two-step route was taken */
+    char kept_why[600];   /* why the pattern traced keeps pairs over the minimum (room
+                             for a whole sq_error message: no UTF-8 cut) */
 } sq_layout_report;
+
+/* A valence-3/valence-5 pair of the pattern traced over the Gauss–Bonnet
+ * minimum (the nearest first, as the minimal pattern would cancel them). */
+typedef struct {
+    double x3, y3, x5, y5; /* the valence-3 and the valence-5 point */
+    double distance;
+} sq_kept_pair;
 
 typedef struct {
     sq_field_analysis analysis; /* guiding field (zeroed for a pattern file) */
@@ -68,6 +77,8 @@ typedef struct {
     int valid;              /* layout passed sq_layout_check */
     double t_trace, t_layout; /* seconds */
     sq_layout_report report;
+    int nkept;
+    sq_kept_pair *kept;     /* (nsing − gauss_bonnet_min)/2 pairs, report.kept_why */
 } sq_layout_result;
 
 /* On SQ_ERR_LAYOUT the result still holds the last layout (for pictures
