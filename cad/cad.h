@@ -196,6 +196,9 @@ typedef struct {
     cad_size_fn size;           /* optional local size bound (NULL: none) */
     void *size_ctx;
     int max_vertices;           /* work bound: refuse beyond it (<= 0: 20 million) */
+    int keep_segments;          /* 1: refine triangles only, never split a segment
+                                   (no Gabriel refinement: a corner far sharper than
+                                   any angle bound then costs nothing) */
 } cad_cdt_input;
 
 typedef struct {

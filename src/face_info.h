@@ -26,6 +26,7 @@ typedef struct {
     int loop;
     int edge_in, edge_out; /* edge ending here, edge starting here */
     int smooth;            /* 1: smooth junction (|180 - angle| < tol) */
+    double cusp_tol_deg;   /* interior angles below this are cusps here */
 } sq_vertex;
 
 typedef struct {
@@ -39,11 +40,18 @@ typedef struct {
 
 sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_error *err);
 
-/* Interior angles below this are cusps (degrees): two edges tangent at
- * their common vertex with the face between them.  Any quad with a corner
- * there has a zero angle, hence a zero Jacobian: the face has no valid
- * all-quad mesh.  (CAD tangency holds to about 1e-7 rad, far below.) */
-#define SQ_CUSP_TOL_DEG 1e-3
+/* Cusps: two edges tangent at their common vertex with the face between
+ * them.  Any quad with a corner there has a zero angle, hence a zero
+ * Jacobian: the face has no valid all-quad mesh.  Tangent means tangent as
+ * far as the face is resolved: cad_face_create closes its junctions to
+ * SQ_CUSP_REL_TOL of the boundary's length (delta), so an edge's direction
+ * over its length L is known to delta/L; edges at an angle a with
+ * a L_min < delta (L_min the shorter one's length) lie within delta of
+ * each other all along the shorter one.  A real angle above that, however
+ * small (a sliver's 0.0004 degrees), is a corner: a quad there has scaled
+ * Jacobian sin(a) > 0.  (Tangencies in CAD files hold to 1e-10 rad or
+ * better: the real parts' cusps read 5e-11 degrees or 0.) */
+#define SQ_CUSP_REL_TOL 1e-7
 
 /* SQ_ERR_LAYOUT, naming where and why, if the face has a cusp. */
 sq_status sq_face_check_cusps(const sq_face_info *info, sq_error *err);
