@@ -648,12 +648,18 @@ class _Quiet:
         os.close(self.fd)
 
 
-def write_face(path, loops, transform):
-    """Build the face in a fresh model, move it, write it."""
+def write_face(path, loops, transform, autofix=True):
+    """Build the face in a fresh model, move it, write it.  autofix=False builds it
+    without Gmsh's shape fixing, which would make an invalid face valid: it drops
+    the outline of a face whose hole lies outside it and keeps only the disc."""
     occ = gmsh.model.occ
     gmsh.clear()
     tags = [build_loop(occ, lp) for lp in loops]
-    s = occ.addPlaneSurface(tags)
+    gmsh.option.setNumber("Geometry.OCCAutoFix", 1 if autofix else 0)
+    try:
+        s = occ.addPlaneSurface(tags)
+    finally:  # the reader (reread) fixes as before
+        gmsh.option.setNumber("Geometry.OCCAutoFix", 1)
     if "rotate_axis" in transform:
         ax = transform["rotate_axis"]
         occ.rotate([(2, s)], 0, 0, 0, ax[0], ax[1], ax[2], math.radians(transform["rotate_deg"]))
@@ -738,7 +744,7 @@ def generate(outdir, seed=1, ids=None, count=320, classes=None):
             name = "%04d_%s.step" % (i, cls)
             path = os.path.join(outdir, name)
             scale2 = transform.get("scale", 1.0) ** 2
-            write_face(path, loops, transform)
+            write_face(path, loops, transform, autofix=cls != "invalid")
             nf, back, err = reread(path)
             # the face is what was drawn if OCC reads back one face of the drawn area
             # (1e-3: the sampling's chord error, (pi/400)^2/6 of an arc's area, is < 1e-5,

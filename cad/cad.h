@@ -72,10 +72,18 @@ cad_face_status cad_model_face_status(const cad_model *model, int index, const c
  * or the given one), 0 when healing is off. */
 double cad_model_heal_tolerance(const cad_model *model);
 
-/* Interior angles below this are cusps (degrees): two edges tangent at
- * their common vertex with the face between them.  Any quad with a corner
- * there has a zero angle, hence a zero Jacobian: healing blunts them. */
-#define CAD_CUSP_TOL_DEG 1e-3
+/* Cusps: two edges tangent at their common vertex with the face between
+ * them.  Any quad with a corner there has a zero angle, hence a zero
+ * Jacobian: healing blunts them.  Tangent means tangent as far as the face
+ * is resolved: cad_face_create closes its junctions to CAD_CUSP_REL_TOL of
+ * the boundary's length (delta), so an edge's direction over its length L
+ * is known to delta/L; edges at an angle a with a L_min < delta (L_min the
+ * shorter one's length) lie within delta of each other all along the
+ * shorter one.  A real angle above that, however small (a sliver's 0.0004
+ * degrees), is a corner: a quad there has scaled Jacobian sin(a) > 0.
+ * (Tangencies in CAD files hold to 1e-10 rad or better: the real parts'
+ * cusps read 5e-11 degrees or 0.) */
+#define CAD_CUSP_REL_TOL 1e-7
 
 /* A cusp is blunted only by a segment (the healing tolerance) at least this
  * fraction of the face's size: the meshers take such a face in under a
@@ -210,6 +218,9 @@ typedef struct {
     cad_size_fn size;           /* optional local size bound (NULL: none) */
     void *size_ctx;
     int max_vertices;           /* work bound: refuse beyond it (<= 0: 20 million) */
+    int keep_segments;          /* 1: refine triangles only, never split a segment
+                                   (no Gabriel refinement: a corner far sharper than
+                                   any angle bound then costs nothing) */
 } cad_cdt_input;
 
 typedef struct {

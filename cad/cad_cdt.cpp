@@ -21,6 +21,7 @@
 #include <CGAL/Delaunay_mesh_face_base_2.h>
 #include <CGAL/Delaunay_mesh_vertex_base_2.h>
 #include <CGAL/Delaunay_mesher_2.h>
+#include <CGAL/Delaunay_mesher_no_edge_refinement_2.h>
 #include <CGAL/Exact_predicates_inexact_constructions_kernel.h>
 #include <CGAL/Mesh_2/Face_badness.h>
 #include <CGAL/box_intersection_d.h>
@@ -127,8 +128,30 @@ class Criteria {
 };
 
 typedef CGAL::Delaunay_mesher_2<CDT, Criteria> Mesher;
+typedef CGAL::Delaunay_mesher_no_edge_refinement_2<CDT, Criteria> Face_mesher;
 
 const size_t MAX_VERTICES = 20000000; // default work bound: a tiny size bound must not run away
+
+// CGAL's refinement of the domain outside the holes' seeds, one step at a
+// time so that the work bound is checked as it goes.
+template <class M>
+sq_status refine(CDT &cdt, const Criteria &crit, const std::vector<Point> &seeds,
+                 const cad_cdt_input *in, size_t max_vertices, sq_error *err)
+{
+    M mesher(cdt, crit);
+    if (!seeds.empty()) mesher.set_seeds(seeds.begin(), seeds.end(), false);
+    mesher.init();
+    while (!mesher.is_refinement_done()) {
+        mesher.step_by_step_refine_mesh();
+        if (cdt.number_of_vertices() > max_vertices)
+            return SQ_FAIL(err, SQ_ERR_GEOMETRY,
+                           "a triangulation with angles above %g degrees needs more than %zu "
+                           "vertices: the face has features far below the size %g (a thin part, "
+                           "near-touching boundaries, a needle corner)",
+                           in->min_angle_deg, max_vertices, in->max_size);
+    }
+    return SQ_OK;
+}
 
 sq_status cdt_mesh(const cad_cdt_input *in, cad_cdt_output *out, sq_error *err)
 {
@@ -180,27 +203,18 @@ sq_status cdt_mesh(const cad_cdt_input *in, cad_cdt_output *out, sq_error *err)
         double s = std::sin(in->min_angle_deg * M_PI / 180.0);
         sine2 = s * s;
     }
-    Mesher mesher(cdt, Criteria(sine2, in->max_size > 0 ? in->max_size : 0, in->size, in->size_ctx,
-                                1e-7 * diam));
+    Criteria crit(sine2, in->max_size > 0 ? in->max_size : 0, in->size, in->size_ctx, 1e-7 * diam);
     std::vector<Point> seeds;
     for (int h = 0; h < in->nholes; ++h) seeds.push_back(Point(in->holes[2 * h], in->holes[2 * h + 1]));
-    if (!seeds.empty()) mesher.set_seeds(seeds.begin(), seeds.end(), false, false);
     const size_t max_vertices = in->max_vertices > 0 ? (size_t)in->max_vertices : MAX_VERTICES;
     if (cdt.number_of_vertices() > max_vertices)
         return SQ_FAIL(err, SQ_ERR_GEOMETRY,
                        "the boundary alone needs %zu points, more than the %zu allowed (a size "
                        "bound far below the face's size)",
                        cdt.number_of_vertices(), max_vertices);
-    mesher.init();
-    while (!mesher.is_refinement_done()) {
-        mesher.step_by_step_refine_mesh();
-        if (cdt.number_of_vertices() > max_vertices)
-            return SQ_FAIL(err, SQ_ERR_GEOMETRY,
-                           "a triangulation with angles above %g degrees needs more than %zu "
-                           "vertices: the face has features far below the size %g (a thin part, "
-                           "near-touching boundaries, a needle corner)",
-                           in->min_angle_deg, max_vertices, in->max_size);
-    }
+    sq_status st = in->keep_segments ? refine<Face_mesher>(cdt, crit, seeds, in, max_vertices, err)
+                                     : refine<Mesher>(cdt, crit, seeds, in, max_vertices, err);
+    if (st != SQ_OK) return st;
 
     // Output: vertices used by the triangles in the domain.
     std::unordered_map<const void *, int> id;

@@ -21,11 +21,13 @@
 #include <BRepBuilderAPI_Copy.hxx>
 #include <BRepBuilderAPI_MakeEdge.hxx>
 #include <BRepBuilderAPI_MakeVertex.hxx>
+#include <BRepGProp.hxx>
 #include <BRepTools_WireExplorer.hxx>
 #include <BRep_Builder.hxx>
 #include <BRep_Tool.hxx>
 #include <GCPnts_AbscissaPoint.hxx>
 #include <GeomAPI_ProjectPointOnCurve.hxx>
+#include <GProp_GProps.hxx>
 #include <GeomAdaptor_Curve.hxx>
 #include <Geom_Curve.hxx>
 #include <ShapeExtend_WireData.hxx>
@@ -107,13 +109,16 @@ double arc_length(const travel_edge &te, double a, double b)
 // there), if the face lies between them and the cut stays within the first
 // half of both edges; fills the cuts and the record.  False: no cusp to
 // blunt there.
-bool blunt_one(travel_edge &in, travel_edge &out, const gp_Dir &normal, double tol,
+bool blunt_one(travel_edge &in, travel_edge &out, const gp_Dir &normal, double tol, double span,
                sqcad::heal_record &r)
 {
     const gp_Vec tin = travel_tangent(in, in.t1), tout = travel_tangent(out, out.t0);
-    if (tin.Magnitude() <= gp::Resolution() || tout.Magnitude() <= gp::Resolution() ||
-        tout.Angle(-tin) * 180.0 / M_PI >= CAD_CUSP_TOL_DEG)
+    if (tin.Magnitude() <= gp::Resolution() || tout.Magnitude() <= gp::Resolution())
         return false;
+    // tangent as far as the face is resolved (cad.h, CAD_CUSP_REL_TOL): the
+    // same test as the mesher's refusal (src/face/face_info.c)
+    const double shorter = std::min(arc_length(in, in.t0, in.t1), arc_length(out, out.t0, out.t1));
+    if (tout.Angle(-tin) * shorter >= span) return false;
     // first travel fraction 2^-k of the outgoing edge (k from 52 down) where
     // the curves are more than tol apart: the root is bracketed below it
     parting f(in, out, tol);
@@ -165,7 +170,7 @@ TopoDS_Edge trimmed(const travel_edge &te)
 // itself if it has none or if only the records are wanted (!build); a null
 // wire if the new edges cannot be built.
 TopoDS_Wire blunt_wire(const TopoDS_Wire &wire, const TopoDS_Face &face, int w,
-                       const gp_Dir &normal, double tol, bool build,
+                       const gp_Dir &normal, double tol, double span, bool build,
                        std::vector<sqcad::heal_record> &out, std::vector<TopoDS_Edge> &made)
 {
     std::vector<travel_edge> E;
@@ -178,7 +183,7 @@ TopoDS_Wire blunt_wire(const TopoDS_Wire &wire, const TopoDS_Face &face, int w,
     for (int i = 0; n > 1 && i < n; ++i) {
         const int prev = i == 0 ? n - 1 : i - 1;
         sqcad::heal_record r;
-        if (!blunt_one(E[(size_t)prev], E[(size_t)i], normal, tol, r)) continue;
+        if (!blunt_one(E[(size_t)prev], E[(size_t)i], normal, tol, span, r)) continue;
         r.wire = w, r.edge_a = prev, r.edge_b = i;
         out.push_back(r);
     }
@@ -206,11 +211,14 @@ bool blunt_wires(const TopoDS_Face &face, const gp_Dir &normal, double tol, bool
                  std::vector<TopoDS_Edge> &made)
 {
     BRep_Builder b;
+    GProp_GProps boundary;
+    BRepGProp::LinearProperties(face, boundary);
+    const double span = CAD_CUSP_REL_TOL * boundary.Mass();
     int w = 0;
     for (TopoDS_Iterator it(face); it.More(); it.Next()) {
         if (it.Value().ShapeType() != TopAbs_WIRE) continue;
-        TopoDS_Wire nw =
-            blunt_wire(TopoDS::Wire(it.Value()), face, w++, normal, tol, build, out, made);
+        TopoDS_Wire nw = blunt_wire(TopoDS::Wire(it.Value()), face, w++, normal, tol, span, build,
+                                    out, made);
         if (nw.IsNull()) return false;
         if (build) b.Add(res, nw);
     }

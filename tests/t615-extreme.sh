@@ -9,6 +9,11 @@
 #  - a 9.5-degree parallelogram and a 0.6-degree needle: the field's graded
 #    coarse triangulation comes out (no "16 refinements"), within seconds;
 #  - a 500-sided polygon: its triangulation (every corner graded) in seconds;
+#  - a parallelogram 1 x 5e-6 with corners of 5.7e-4 degrees (a real angle,
+#    far above what the face resolves: not a cusp): meshed by the split road
+#    (its last triangulation keeps the boundary's segments), every scaled
+#    Jacobian > 0, at --size 0.05 (a few hundred quads: the validity is
+#    tested here, the time at the default size in bench/);
 #  - a cusp (a rectangle cut by a disc tangent to its side: two edges
 #    tangent at their vertex, interior angle 0): no all-quad mesh with
 #    positive Jacobians exists; the file's tolerance (1e-7) is too small to
@@ -42,6 +47,7 @@ faces = {
     "sliver": lambda: occ.addRectangle(0, 0, 0, 1, 1e-6),
     "parallelogram": lambda: poly([(0, 0), (1, 0), (1.2619, 0.0436136), (0.2619, 0.0436136)]),
     "needle": lambda: poly([(0, 0), (1, 0), (1, 0.01)]),
+    "sharp": lambda: poly([(0, 0), (1, 0), (1.5, 5e-6), (0.5, 5e-6)]),
     "cusp": lambda: occ.cut([(2, occ.addRectangle(-1, 0, 0, 2, 1))], [(2, occ.addDisk(0, 1, 0, 1, 1))]),
     "poly500": lambda: poly([(math.cos(2 * math.pi * k / 500), math.sin(2 * math.pi * k / 500))
                              for k in range(500)]),
@@ -69,8 +75,8 @@ slow=1
 expect sliver 4 30 "$sq" mesh "$tmp/sliver.step" --road layout -q -o "$tmp/s.msh"
 grep -q "needs more than 20000 vertices" "$tmp/err" || fail "sliver: not the work bound: $(cat "$tmp/err")"
 [ ! -e "$tmp/s.msh" ] || fail "sliver: output file left behind"
-expect sliver-split 0 $((120 * slow)) "$sq" mesh "$tmp/sliver.step" -q -o "$tmp/s.msh" --report "$tmp/s.json"
-"$py" - "$tmp/s.json" <<'PY' || fail "sliver: not a valid split-road mesh"
+valid_split() { # report name
+    "$py" - "$1" <<'PY' || fail "$2: not a valid split-road mesh"
 import json, sys
 d = json.load(open(sys.argv[1]))
 m = d["mesh"]
@@ -79,6 +85,11 @@ print("" if ok else "report: road %s, min scaled Jacobian %s, %s inverted" % (
     d["road"], m["min_scaled_jacobian"], m["inverted"]))
 sys.exit(0 if ok else 1)
 PY
+}
+expect sliver-split 0 $((120 * slow)) "$sq" mesh "$tmp/sliver.step" -q -o "$tmp/s.msh" --report "$tmp/s.json"
+valid_split "$tmp/s.json" sliver
+expect sharp 0 $((60 * slow)) "$sq" mesh "$tmp/sharp.step" --size 0.05 -q -o "$tmp/p.msh" --report "$tmp/p.json"
+valid_split "$tmp/p.json" sharp
 # both faces of the cut have two horns each (0 deg, never 360: the side of
 # a +-180-degree turning is read from the edges themselves, not atan2's sign)
 [ "$("$sq" info "$tmp/cusp.step" | grep -c ': 0.0000 deg')" -eq 4 ] ||

@@ -106,7 +106,7 @@ sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_erro
     info->vertices = calloc(ne > 0 ? (size_t)ne : 1, sizeof *info->vertices);
     if (!info->vertices) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     sq_status st = SQ_OK;
-    double twice_area = 0.0;
+    double twice_area = 0.0, perimeter = 0.0;
     for (int e = 0; e < ne && st == SQ_OK; e++) {
         double a = 0.0;
         /* absolute floor of |x dy - y dx| integrated: 1e-14 of the edge's
@@ -115,6 +115,7 @@ sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_erro
         double p0[2], L = cad_face_edge_length(face, e);
         st = cad_face_edge_eval(face, e, 0.0, p0, NULL, NULL, err);
         if (st != SQ_OK) break;
+        perimeter += L;
         double scale = L * (L + hypot(p0[0], p0[1]));
         st = integrate_edge(face, e, green_integrand, 1e-14 * fmin(1.0, scale), &a, err);
         twice_area += a;
@@ -143,7 +144,9 @@ sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_erro
             v->x = p[0];
             v->y = p[1];
             v->angle_deg = 180.0 - turn * 180.0 / M_PI;
-            if (180.0 - fabs(turn) * 180.0 / M_PI < SQ_CUSP_TOL_DEG)
+            v->cusp_tol_deg = SQ_CUSP_REL_TOL * perimeter * 180.0 / M_PI /
+                              fmin(cad_face_edge_length(face, ein), cad_face_edge_length(face, eout));
+            if (180.0 - fabs(turn) * 180.0 / M_PI < v->cusp_tol_deg)
                 st = cusp_side(face, ein, eout, p, turn, &v->angle_deg, err);
             v->loop = l;
             v->edge_in = ein;
@@ -158,14 +161,16 @@ sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_erro
 
 sq_status sq_face_check_cusps(const sq_face_info *info, sq_error *err)
 {
-    for (int k = 0; k < info->nvertices; k++)
-        if (info->vertices[k].angle_deg < SQ_CUSP_TOL_DEG)
+    for (int k = 0; k < info->nvertices; k++) {
+        const sq_vertex *v = &info->vertices[k];
+        if (v->angle_deg < v->cusp_tol_deg)
             return SQ_FAIL(err, SQ_ERR_LAYOUT,
                            "no all-quad mesh with positive Jacobians: the corner at (%.10g, %.10g) "
-                           "is a cusp (interior angle %.2g deg, below %g: its two edges are tangent "
-                           "or nearly so), and a quad's corner there has a zero angle",
-                           info->vertices[k].x, info->vertices[k].y, info->vertices[k].angle_deg,
-                           SQ_CUSP_TOL_DEG);
+                           "is a cusp (interior angle %.2g deg, below %.2g: its two edges are "
+                           "tangent as far as the face is resolved, %g of its boundary's length), "
+                           "and a quad's corner there has a zero angle",
+                           v->x, v->y, v->angle_deg, v->cusp_tol_deg, SQ_CUSP_REL_TOL);
+    }
     return SQ_OK;
 }
 

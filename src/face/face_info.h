@@ -26,6 +26,7 @@ typedef struct {
     int loop;
     int edge_in, edge_out; /* edge ending here, edge starting here */
     int smooth;            /* 1: smooth junction (|180 - angle| < tol) */
+    double cusp_tol_deg;   /* interior angles below this are cusps here */
 } sq_vertex;
 
 typedef struct {
@@ -39,11 +40,9 @@ typedef struct {
 
 sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_error *err);
 
-/* Interior angles below this are cusps (degrees): two edges tangent at
- * their common vertex with the face between them.  Any quad with a corner
- * there has a zero angle, hence a zero Jacobian: the face has no valid
- * all-quad mesh.  (CAD tangency holds to about 1e-7 rad, far below.) */
-#define SQ_CUSP_TOL_DEG CAD_CUSP_TOL_DEG
+/* Cusps (cad.h, CAD_CUSP_REL_TOL): healing blunts them within the
+ * tolerance; those left are refused (sq_face_check_cusps). */
+#define SQ_CUSP_REL_TOL CAD_CUSP_REL_TOL
 
 /* SQ_ERR_LAYOUT, naming where and why, if the face has a cusp. */
 sq_status sq_face_check_cusps(const sq_face_info *info, sq_error *err);

@@ -492,7 +492,8 @@ static sq_status cdt_round(const cad_face *face, const sq_tri_options *opt, size
                         .max_size = sc->size,
                         .size = opt->nextra ? graded_size : NULL,
                         .size_ctx = sc,
-                        .max_vertices = opt->max_vertices};
+                        .max_vertices = opt->max_vertices,
+                        .keep_segments = opt->keep_segments};
     if ((st = cad_cdt_mesh(&in, out, err)) != SQ_OK) goto done;
     st = take_splits(face, p, b, out, nsplit, err);
 done:

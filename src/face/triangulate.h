@@ -35,6 +35,8 @@ typedef struct {
     double extra_growth;  /* <= 0: 1/2 */
     int max_vertices;     /* work bound (default SQ_TRI_MAX_VERTICES): beyond
                              it the face is refused (SQ_ERR_GEOMETRY) */
+    int keep_segments;    /* 1: never split a boundary segment in the refinement
+                             (cad_cdt_input's: for order 1 with no angle bound) */
 } sq_tri_options;
 
 /* The coarse triangulation carries a field of order up to 12 on every

@@ -10,7 +10,12 @@
  * expected: four times that (and a floor for the boundary's own points)
  * before the bound is lowered, so a sliver does not run CGAL to the quad
  * budget first.  The bounds tried: 20 degrees, then 5 (a needle or a thin
- * part resolved with fewer, flatter triangles), then none. */
+ * part resolved with fewer, flatter triangles), then none, with the
+ * boundary's segments kept as they are: CGAL's Gabriel refinement of the
+ * segments at a corner of angle a grades them geometrically with ratio
+ * about 1 + a (millions of points at the 0.0004 degree corner of a
+ * sliver), while a triangle with that corner split in three quads is
+ * valid (scaled Jacobian sin a > 0). */
 static sq_status triangulate(const cad_face *face, const sq_face_info *info, double size,
                              double max_quads, sq_triangulation *tri, sq_error *err)
 {
@@ -24,6 +29,7 @@ static sq_status triangulate(const cad_face *face, const sq_face_info *info, dou
     sq_status st = SQ_OK;
     for (int k = 0; k < 3; k++) {
         to.min_angle_deg = min_angle[k];
+        to.keep_segments = min_angle[k] == 0.0;
         to.max_vertices = (int)fmin(k < 2 ? fmin(budget, expected) : budget, 2e7) + 3;
         st = sq_triangulate(face, &to, tri, err);
         if (st != SQ_ERR_GEOMETRY) break;
