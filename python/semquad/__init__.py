@@ -188,10 +188,12 @@ def _enc(s):
 
 
 def _options(**kw):
-    """sq_options from the defaults plus keywords (None: the default); the
-    caller keeps the returned keep-alive list until the call returns."""
+    """sq_options from the defaults plus keywords (None: the default),
+    checked by sq_options_check; the caller keeps the returned keep-alive
+    list until the C call returns."""
     o = _Options()
     _lib.sq_options_init(ctypes.byref(o))
+    types = dict(_Options._fields_)
     keep = []
     for key, value in kw.items():
         if value is None:
@@ -204,17 +206,14 @@ def _options(**kw):
             cb = _LOG_FN(lambda _d, level, line: value(level, line.decode()))
             keep.append(cb)
             o.log = cb
-        elif isinstance(getattr(o, key), bytes) or key in ("singularities",):
-            b = _enc(value)
-            keep.append(b)
-            setattr(o, key, b)
-        elif isinstance(value, bool):
-            setattr(o, key, int(value))
+        elif types[key] is ctypes.c_char_p:
+            keep.append(_enc(value))
+            setattr(o, key, keep[-1])
         else:
             try:
-                setattr(o, key, value)
-            except TypeError as e:
-                raise Error(2, "%s: %s" % (key, e)) from None
+                setattr(o, key, int(value) if isinstance(value, bool) else value)
+            except TypeError:
+                raise Error(2, "%s expects a number, got %r" % (key, value)) from None
     err = _Error()
     _check(_lib.sq_options_check(ctypes.byref(o), ctypes.byref(err)), err)
     return o, keep
@@ -232,16 +231,17 @@ def open(path, heal=True, heal_tolerance=None):
 
 
 class _Handle:
-    """An owned C handle freed once, by close(), `with` or garbage collection."""
+    """An owned C handle freed once (by its sq_*_free, named _free), by
+    close(), `with` or garbage collection."""
     _free = None
 
     def __init__(self, h):
         self._h = h
 
     def close(self):
-        if getattr(self, "_h", None) is not None and self._h.value:
-            type(self)._free(ctypes.byref(self._h))
-        self._h = None
+        h, self._h = getattr(self, "_h", None), None
+        if h is not None and h.value and _lib is not None:  # _lib: None at exit
+            getattr(_lib, self._free)(ctypes.byref(h))
 
     def __del__(self):
         self.close()
@@ -261,7 +261,7 @@ class _Handle:
 class Model(_Handle):
     """A CAD file as read (sq_model).  Its meshes borrow it: closing the
     model closes them first."""
-    _free = staticmethod(lambda p: _lib.sq_model_free(p))
+    _free = "sq_model_free"
 
     def __init__(self, h, path):
         super().__init__(h)
@@ -408,7 +408,7 @@ class Mesh(_Handle):
     scaled_jacobian and eta (nq,) float64.  order, road ("layout" or
     "split"), face, num_tags; report (dict) and describe() as the command
     prints them; write(path) to .msh, .xml, .vtu or .svg."""
-    _free = staticmethod(lambda p: _lib.sq_mesh_free(p))
+    _free = "sq_mesh_free"
 
     def __init__(self, h, model):
         super().__init__(h)
@@ -446,7 +446,7 @@ class Mesh(_Handle):
         """Write .msh (Gmsh MSH 4.1, equispaced nodes), .xml (Nektar++),
         .vtu or .svg; nothing is left at path on failure."""
         err = _Error()
-        _check(_lib.sq_mesh_write(self._handle(), _enc(path), ctypes.byref(err)), err)
+        _check(_serial(_lib.sq_mesh_write, self._handle(), _enc(path), ctypes.byref(err)), err)
 
     def to_meshio(self):
         """A meshio.Mesh: cells "quad" (order 1), "quad9" (2), "quad16",
