@@ -3,7 +3,9 @@
 # python3-gmsh (with /usr/bin/python3) is for t604, Gmsh's own reader on our
 # MSH output, and t603's run of ../shared/tools/quadstats.py; both skip (77)
 # without it.  gmsh (the executable, same 4.8.4 library) is what
-# bench/compare_gmsh.py times against.
+# bench/compare_gmsh.py times against.  python3-numpy is what the semquad
+# Python package (python/) returns its arrays in, python3-meshio what
+# Mesh.to_meshio converts to; t960 runs the package.
 # Idempotent: quiet when everything is present; runs apt-get update only when
 # something is missing.
 set -eu
@@ -13,7 +15,7 @@ libocct-data-exchange-dev \
 libcgal-dev libgmp-dev libmpfr-dev \
 libgsl-dev liblapacke-dev libopenblas-dev libopenblas-serial-dev libsuitesparse-dev \
 librsvg2-bin \
-python3-gmsh gmsh"
+python3-gmsh gmsh python3-numpy python3-meshio"
 missing=""
 for p in $PKGS; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

@@ -1,0 +1,103 @@
+"""The Python package (python/semquad) against the command: for three
+examples, the same nodes and elements as `semquad mesh -o x.msh`; a bad
+file raises semquad.Error with status 3 and the command's message; bad
+option values raise status 2.  argv: semquad executable, examples dir;
+env PYTHONPATH and SEMQUAD_LIBRARY point at the build tree."""
+import os
+import subprocess
+import sys
+import tempfile
+
+try:
+    import numpy as np
+    import semquad
+except ImportError as e:  # numpy from python3-numpy (scripts/bootstrap.sh)
+    print("skip: %s" % e)
+    sys.exit(77)
+
+exe, examples = sys.argv[1], sys.argv[2]
+failures = 0
+
+
+def fail(what):
+    global failures
+    failures += 1
+    print("FAIL: " + what)
+
+
+def read_msh(path):
+    """Nodes (n,3) and the quads' node tags (1-based, Gmsh order) of our
+    MSH 4.1 (one node block, quads first: write_msh.c)."""
+    lines = open(path).read().split("\n")
+    i = lines.index("$Nodes")
+    n = int(lines[i + 1].split()[1])
+    start = i + 3 + n  # header, block header, n tags
+    nodes = np.array([[float(v) for v in l.split()] for l in lines[start:start + n]])
+    i = lines.index("$Elements")
+    nq = int(lines[i + 2].split()[3])
+    quads = np.array([[int(v) for v in l.split()[1:]] for l in lines[i + 3:i + 3 + nq]])
+    return nodes, quads
+
+
+tmp = tempfile.mkdtemp()
+for name, size in (("half_disc", "0.1"), ("annulus", None), ("naca0012", None)):
+    step = os.path.join(examples, name + ".step")
+    msh = os.path.join(tmp, name + ".msh")
+    # equispaced: the MSH writer resamples GLL nodes to equispaced ones, so
+    # only equispaced meshes are written node for node
+    cmd = [exe, "mesh", step, "--order", "4", "--nodes", "equispaced", "-q", "-o", msh]
+    if size:
+        cmd += ["--size", size]
+    subprocess.run(cmd, check=True)
+    xyz, quads = read_msh(msh)
+    with semquad.open(step) as model:
+        mesh = model.face().mesh(order=4, size=float(size) if size else None, nodes="equispaced")
+        if mesh.nodes.shape != xyz.shape or mesh.elements.shape != quads.shape:
+            fail("%s: python %s nodes %s quads, msh %s %s" % (
+                name, mesh.nodes.shape, mesh.elements.shape, xyz.shape, quads.shape))
+            continue
+        # %.17g round-trips a double: equal bit for bit, tolerance 0
+        if not np.array_equal(mesh.nodes, xyz):
+            fail("%s: max node difference %g (tolerance 0: %%.17g is exact)" % (
+                name, np.abs(mesh.nodes - xyz).max()))
+        if not np.array_equal(mesh.elements[:, semquad.gmsh_order(4)] + 1, quads):
+            fail("%s: elements differ from the MSH's" % name)
+        if mesh.road != "layout" or mesh.order != 4 or not (mesh.scaled_jacobian > 0).all():
+            fail("%s: road %s order %d min scaled Jacobian %g" % (
+                name, mesh.road, mesh.order, mesh.scaled_jacobian.min()))
+        rep = mesh.report
+        if rep["mesh"]["quads"] != len(quads) or rep["face"] != model.default_face:
+            fail("%s: report quads %s face %s" % (name, rep["mesh"]["quads"], rep["face"]))
+        sides = mesh.boundary
+        if sides.shape[1] != 3 or not (0 <= sides[:, 2]).all() or \
+                not (sides[:, 2] < mesh.num_tags).all():
+            fail("%s: boundary tags outside 0..%d" % (name, mesh.num_tags - 1))
+    print("%s: %d nodes, %d quads as the CLI's MSH" % (name, len(xyz), len(quads)))
+
+# a bad file: status 3 and the command's own line
+bad = os.path.join(tmp, "bad.step")
+with open(bad, "w") as f:
+    f.write("not a CAD file\n")
+r = subprocess.run([exe, "info", bad], capture_output=True, text=True)
+try:
+    semquad.open(bad)
+    fail("bad file opened")
+except semquad.Error as e:
+    want = r.stderr.strip()
+    got = "semquad: input error: %s" % e
+    if e.status != 3 or r.returncode != 3 or got != want:
+        fail("bad file: status %d message '%s', CLI %d '%s'" % (e.status, got, r.returncode, want))
+
+# bad option values: status 2 before any work
+with semquad.open(os.path.join(examples, "half_disc.step")) as model:
+    for opts in ({"order": 11}, {"road": "nowhere"}, {"nodes": "random"}, {"field": "mbo"},
+                 {"order": "four"}):
+        try:
+            model.face().mesh(**opts)
+            fail("%s accepted" % opts)
+        except semquad.Error as e:
+            if e.status != 2:
+                fail("%s: status %d (%s)" % (opts, e.status, e))
+
+print("%d passed, %d failed" % (1 if not failures else 0, 1 if failures else 0))
+sys.exit(1 if failures else 0)
