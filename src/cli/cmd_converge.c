@@ -52,17 +52,17 @@ static sq_status parse_sizes(const char *val, double *h, int *n, sq_error *err)
 
 sq_status sq_cmd_converge(int argc, char **argv, sq_error *err)
 {
-    const char *csv = NULL, *svg = NULL, *val;
+    const char *csv = NULL, *val;
     double sizes[MAX_SIZES];
     sq_cli_args args;
     sq_cli_args_init(&args);
     sq_options *o = &args.opt;
     for (int i = 0; i < argc; i++) {
         const char *a = argv[i];
-        if (!strcmp(a, "--face")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            SQ_TRY(sq_cli_int(a, val, 0, 1000000, &args.face, err));
-        } else if (!strcmp(a, "--solution")) {
+        int taken;
+        SQ_TRY(sq_cli_take("converge", argc, argv, &i, &args, &taken, err));
+        if (taken) continue;
+        if (!strcmp(a, "--solution")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &o->study_solution, err));
         } else if (!strcmp(a, "--method")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &o->study_methods, err));
@@ -78,19 +78,13 @@ sq_status sq_cmd_converge(int argc, char **argv, sq_error *err)
             SQ_TRY(sq_cli_int(a, val, 1, 12, &o->study_geom_order, err));
         } else if (!strcmp(a, "--csv")) {
             SQ_TRY(sq_cli_value(argc, argv, &i, &csv, err));
-        } else if (!strcmp(a, "--svg")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &svg, err));
-        } else if (!strcmp(a, "--quiet") || !strcmp(a, "-q")) {
-            args.quiet = 1;
-            o->log = NULL;
-        } else if (a[0] == '-' && a[1]) {
-            return SQ_FAIL(err, SQ_ERR_USAGE, "converge: unknown option %s", a);
-        } else if (!args.input) {
-            args.input = a;
         } else {
-            return SQ_FAIL(err, SQ_ERR_USAGE, "converge: one input file expected");
+            return sq_cli_unknown("converge", a, err);
         }
     }
+    if (args.output || args.report)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "converge: writes --csv and --svg only (no -o, --report)");
+    const char *svg = args.svg;
     if (!args.input) return SQ_FAIL(err, SQ_ERR_USAGE, "converge: missing input file");
     sq_model *m = NULL;
     SQ_TRY(sq_cli_open(&args, &m, err));
