@@ -139,6 +139,9 @@ sq_status refine(CDT &cdt, const Criteria &crit, const std::vector<Point> &seeds
                  const cad_cdt_input *in, size_t max_vertices, sq_error *err)
 {
     M mesher(cdt, crit);
+    // CGAL's no-edge-refinement mesher leaves its seeds' mark unset until
+    // told (UBSan: an invalid bool): clear it first
+    mesher.clear_seeds();
     if (!seeds.empty()) mesher.set_seeds(seeds.begin(), seeds.end(), false);
     mesher.init();
     while (!mesher.is_refinement_done()) {
