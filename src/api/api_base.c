@@ -33,6 +33,13 @@ void sq_options_init(sq_options *o)
     o->bl_ratio = 1.2;
 }
 
+const sq_options *sq_api_options(const sq_options *o, sq_options *def)
+{
+    if (o) return o;
+    sq_options_init(def);
+    return def;
+}
+
 void sq_api_log(const sq_options *o, sq_log_level level, const char *fmt, ...)
 {
     if (!o || !o->log) return;
@@ -65,8 +72,7 @@ static sq_status check_field(const sq_options *o, sq_error *err)
                    o->field);
 }
 
-/* The pattern a field name implies: "htheta" without one is "natural". */
-static const char *singularities(const sq_options *o)
+const char *sq_api_singularities(const sq_options *o)
 {
     if (o->singularities) return o->singularities;
     return o->field && !strcmp(o->field, "htheta") ? "natural" : NULL;
@@ -98,7 +104,7 @@ sq_status sq_api_layout_options(const sq_options *o, int for_mesh, sq_layout_opt
     if (o->field_order && for_mesh) lo->htheta.order = o->field_order;
     if (o->tri_size > 0.0) lo->field.tri.size = o->tri_size;
     if (o->merge_distance > 0.0) lo->trace.merge_distance = o->merge_distance;
-    lo->singularities = singularities(o);
+    lo->singularities = sq_api_singularities(o);
     lo->allow_misaligned = o->allow_misaligned;
     lo->field.tri.order = lo->field.order < 12 ? lo->field.order : 12;
     if (for_mesh) lo->htheta.tri.order = lo->htheta.order < 12 ? lo->htheta.order : 12;

@@ -34,7 +34,6 @@ struct sq_field {
     int htheta; /* 1: the H/θ field (ht), 0: the guiding field (an) */
     sq_field_analysis an;
     sq_htheta ht;
-    int allow_misaligned;
     int nsing;
     double *xy;
     int *valence;
@@ -73,6 +72,14 @@ void sq_api_log(const sq_options *o, sq_log_level level, const char *fmt, ...)
     __attribute__((format(printf, 3, 4)))
 #endif
     ;
+
+/* o, or the defaults in *def when o is NULL (every entry point takes
+ * NULL for the defaults). */
+const sq_options *sq_api_options(const sq_options *o, sq_options *def);
+
+/* The pattern traced from: o->singularities, or "natural" for the field
+ * "htheta" without one; NULL for the guiding field. */
+const char *sq_api_singularities(const sq_options *o);
 
 /* sq_options into the stages' own options; SQ_ERR_USAGE naming a bad
  * value.  `for_mesh`: the mesh command's cheaper field settings. */

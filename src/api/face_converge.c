@@ -54,8 +54,7 @@ sq_status sq_face_converge(const sq_model *m, int face, const sq_options *o, sq_
 {
     *out = NULL;
     sq_options def;
-    if (!o) sq_options_init(&def);
-    if (!o) o = &def;
+    o = sq_api_options(o, &def);
     sq_converge_options co;
     sq_converge_options_default(&co);
     SQ_TRY(sq_api_study_methods(o, &co.methods, err));

@@ -68,15 +68,12 @@ sq_status sq_face_field(const sq_model *m, int face, const sq_options *o, sq_fie
 {
     *out = NULL;
     sq_options def;
-    if (!o) sq_options_init(&def);
-    if (!o) o = &def;
+    o = sq_api_options(o, &def);
     sq_field_options fo;
     SQ_TRY(sq_api_field_options(o, &fo, err));
-    const char *sing = o->singularities;
-    if (!sing && !strcmp(o->field, "htheta")) sing = "natural";
+    const char *sing = sq_api_singularities(o);
     sq_field *h = calloc(1, sizeof *h);
     if (!h) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    h->allow_misaligned = o->allow_misaligned;
     sq_status st = sq_api_face_open(m, face, o, &h->face, err);
     if (st == SQ_OK && sing) st = htheta(h, &fo, sing, o, err);
     if (st == SQ_OK && !sing) st = sq_field_analyse(h->face.cad, &fo, &h->an, err);

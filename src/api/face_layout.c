@@ -9,8 +9,7 @@ sq_status sq_face_layout(const sq_model *m, int face, const sq_options *o, sq_qu
 {
     *out = NULL;
     sq_options def;
-    if (!o) sq_options_init(&def);
-    if (!o) o = &def;
+    o = sq_api_options(o, &def);
     sq_layout_options lo;
     SQ_TRY(sq_api_layout_options(o, 0, &lo, err));
     sq_quad_layout *l = calloc(1, sizeof *l);

@@ -54,6 +54,19 @@ static void layout_progress(const sq_options *o, const sq_layout_result *r,
                t->critical_points + t->trace + t->layout);
 }
 
+/* The quality of h->q, per quad (the public arrays) and in sum: once per
+ * mesh made. */
+static sq_status per_quad_quality(sq_mesh *h, sq_error *err)
+{
+    size_t n = (size_t)(h->q->nquads ? h->q->nquads : 1);
+    free(h->sjac);
+    free(h->eta);
+    h->sjac = malloc(n * sizeof *h->sjac);
+    h->eta = malloc(n * sizeof *h->eta);
+    if (!h->sjac || !h->eta) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    return sq_quad_mesh_quality(h->q, h->eta, h->sjac, &h->quality, err);
+}
+
 /* Mesh by `mesh(ctx, &m)` at mo's size; without a size the default,
  * sqrt(area)/8, can be too coarse for a small curved feature (an aerofoil
  * in a large box: its curved quads fold): halve it, a few times, rather
@@ -61,9 +74,10 @@ static void layout_progress(const sq_options *o, const sq_layout_result *r,
 typedef sq_status (*mesh_fn)(void *ctx, const sq_mesher_options *mo, sq_quad_mesh **m, sq_error *err);
 
 static sq_status mesh_halving(mesh_fn mesh, void *ctx, sq_mesher_options mo, double default_size,
-                              const sq_options *o, sq_quad_mesh **m, sq_quad_quality *q,
-                              sq_error *err)
+                              const sq_options *o, sq_mesh *h, sq_error *err)
 {
+    sq_quad_mesh **m = &h->q;
+    sq_quad_quality *q = &h->quality;
     sq_status st = SQ_OK;
     for (int k = 0;; k++) {
         if (k > 0) {
@@ -73,7 +87,7 @@ static sq_status mesh_halving(mesh_fn mesh, void *ctx, sq_mesher_options mo, dou
             sq_quad_mesh_free(m);
         }
         st = mesh(ctx, &mo, m, err);
-        if (st == SQ_OK) st = sq_quad_mesh_quality(*m, NULL, NULL, q, err);
+        if (st == SQ_OK) st = per_quad_quality(h, err);
         if (o->size > 0.0 || st != SQ_OK || q->inverted == 0 || k == DEFAULT_SIZE_HALVINGS) break;
     }
     if (st == SQ_OK && q->inverted > 0)
@@ -134,8 +148,8 @@ static sq_status layout_road(sq_mesh *h, const sq_layout_options *lo, sq_mesher_
         mo->field = &cf;
     }
     layout_ctx c = {h->face.cad, r};
-    st = mesh_halving(mesh_by_layout, &c, *mo, sq_mesher_default_size(r->layout.face_area), o,
-                      &h->q, &h->quality, err);
+    st = mesh_halving(mesh_by_layout, &c, *mo, sq_mesher_default_size(r->layout.face_area), o, h,
+                      err);
     mo->field = NULL;
     t->mesh = sq_now() - t1;
     return st;
@@ -146,8 +160,8 @@ static sq_status split_road(sq_mesh *h, const sq_mesher_options *mo, const sq_op
 {
     split_ctx c = {h->face.cad, &h->info};
     double t1 = sq_now();
-    sq_status st = mesh_halving(mesh_by_split, &c, *mo, sq_mesher_default_size(h->info.area), o,
-                                &h->q, &h->quality, err);
+    sq_status st = mesh_halving(mesh_by_split, &c, *mo, sq_mesher_default_size(h->info.area), o, h,
+                                err);
     h->t.mesh = sq_now() - t1;
     if (st != SQ_OK && h->road.reason[0]) {
         char split_msg[sizeof err->msg];
@@ -178,16 +192,14 @@ static sq_status run_roads(sq_mesh *h, sq_api_road road, const sq_layout_options
     return st;
 }
 
-/* The plain arrays of the public accessors. */
+/* The plain arrays of the public accessors (the quality ones are made
+ * with the mesh: per_quad_quality). */
 static sq_status fill_arrays(sq_mesh *h, sq_error *err)
 {
     const sq_quad_mesh *q = h->q;
     h->xyz = malloc(3 * (size_t)q->nnodes * sizeof *h->xyz);
-    h->sjac = malloc((size_t)q->nquads * sizeof *h->sjac);
-    h->eta = malloc((size_t)q->nquads * sizeof *h->eta);
     h->bnd = malloc(3 * (size_t)(q->nbnd ? q->nbnd : 1) * sizeof *h->bnd);
-    if (!h->xyz || !h->sjac || !h->eta || !h->bnd)
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (!h->xyz || !h->bnd) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     for (int k = 0; k < q->nnodes; k++) {
         h->xyz[3 * k] = q->xy[2 * k];
         h->xyz[3 * k + 1] = q->xy[2 * k + 1];
@@ -199,7 +211,7 @@ static sq_status fill_arrays(sq_mesh *h, sq_error *err)
         h->bnd[3 * s + 2] = q->bnd_tag[s];
     }
     cad_face_frame(h->face.cad, h->origin, h->xdir, h->ydir);
-    return sq_quad_mesh_quality(q, h->eta, h->sjac, &h->quality, err);
+    return SQ_OK;
 }
 
 sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_mesh **out,
@@ -207,8 +219,7 @@ sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_
 {
     *out = NULL;
     sq_options def;
-    if (!o) sq_options_init(&def);
-    if (!o) o = &def;
+    o = sq_api_options(o, &def);
     sq_api_road road;
     sq_layout_options lo;
     sq_mesher_options mo;
@@ -283,26 +294,32 @@ void sq_mesh_frame(const sq_mesh *m, double origin[3], double xdir[3], double yd
     memcpy(ydir, m->ydir, sizeof m->ydir);
 }
 
-int sq_mesh_format_known(const char *path)
+/* The mesh writers, by the output's extension. */
+typedef sq_status (*mesh_writer)(const char *path, const sq_quad_mesh *m, sq_error *err);
+static const struct {
+    const char *ext;
+    mesh_writer write;
+} mesh_formats[] = {{".msh", sq_write_msh},
+                    {".xml", sq_write_nektar},
+                    {".vtu", sq_write_quad_vtu},
+                    {".svg", sq_write_quad_svg}};
+
+static mesh_writer writer_of(const char *path)
 {
-    return sq_api_ends_with(path, ".msh") || sq_api_ends_with(path, ".xml") ||
-           sq_api_ends_with(path, ".vtu") || sq_api_ends_with(path, ".svg");
+    for (size_t k = 0; k < sizeof mesh_formats / sizeof *mesh_formats; k++)
+        if (sq_api_ends_with(path, mesh_formats[k].ext)) return mesh_formats[k].write;
+    return NULL;
 }
+
+int sq_mesh_format_known(const char *path) { return writer_of(path) != NULL; }
 
 sq_status sq_mesh_write(const sq_mesh *m, const char *path, sq_error *err)
 {
+    mesh_writer write = writer_of(path);
+    if (!write)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)", path);
     double t = sq_now();
-    sq_status st;
-    if (sq_api_ends_with(path, ".msh"))
-        st = sq_write_msh(path, m->q, err);
-    else if (sq_api_ends_with(path, ".xml"))
-        st = sq_write_nektar(path, m->q, err);
-    else if (sq_api_ends_with(path, ".vtu"))
-        st = sq_write_quad_vtu(path, m->q, err);
-    else if (sq_api_ends_with(path, ".svg"))
-        st = sq_write_quad_svg(path, m->q, err);
-    else
-        st = SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)", path);
+    sq_status st = write(path, m->q, err);
     *m->t_write += sq_now() - t;
     return st;
 }

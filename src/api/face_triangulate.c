@@ -10,8 +10,7 @@ sq_status sq_face_triangulate(const sq_model *m, int face, const sq_options *o,
 {
     *out = NULL;
     sq_options def;
-    if (!o) sq_options_init(&def);
-    if (!o) o = &def;
+    o = sq_api_options(o, &def);
     sq_tri_options to;
     sq_tri_options_default(&to);
     if (o->tri_order) to.order = o->tri_order;

@@ -15,21 +15,18 @@ sq_status sq_model_open(const char *path, const sq_options *opt, sq_model **out,
      * (cad.h).  Both are process-wide and idempotent. */
     gsl_set_error_handler_off();
     cad_catch_signals();
+    sq_options def;
+    opt = sq_api_options(opt, &def);
     cad_read_options ro;
     cad_read_options_default(&ro);
-    if (opt) {
-        ro.heal = opt->heal;
-        if (opt->heal_tolerance > 0.0) ro.heal_tolerance = opt->heal_tolerance;
-    }
+    ro.heal = opt->heal;
+    if (opt->heal_tolerance > 0.0) ro.heal_tolerance = opt->heal_tolerance;
     sq_model *m = calloc(1, sizeof *m);
     if (!m || !(m->path = strdup(path))) {
         free(m);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
-    if (opt)
-        m->opt = *opt;
-    else
-        sq_options_init(&m->opt);
+    m->opt = *opt;
     double t0 = sq_now();
     sq_status st = cad_model_read_with(path, &ro, &m->cad, err);
     m->t_read = sq_now() - t0;
