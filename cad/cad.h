@@ -4,7 +4,7 @@
  * OpenCASCADE/CGAL exception caught and turned into an sq_status + message.
  * Nothing here prints to stdout or stderr.
  *
- * Frames and orientation (../shared/DESIGN.md, "Conventions"): a planar face
+ * Frames and orientation (docs/conventions.md, "Geometry"): a planar face
  * is described in a 2D frame (origin O, axes X, Y) of its plane chosen so that
  * the face normal is +Z = X x Y.  When the face lies in a plane z = const,
  * X and Y are the global x and y axes and O is on the z axis, so coordinates

@@ -1,5 +1,5 @@
 /* semquad — command-line entry: dispatch subcommands, map statuses to exit
- * codes (../shared/DESIGN.md, "Exit statuses"), print errors as one line. */
+ * codes (docs/conventions.md, "Exit statuses"), print errors as one line. */
 #include "cli.h"
 
 #include <omp.h>

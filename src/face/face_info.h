@@ -3,7 +3,7 @@
  * Built on the cad/ evaluation API only (no OpenCASCADE types).  Area by
  * Green's theorem along the exact boundary curves, so it does not depend on
  * any triangulation (OpenCASCADE's own mass properties are off by up to 1 %
- * on B-spline faces, ../shared/geometries/README.md).
+ * on B-spline faces: T106's is 0.9 % off).
  *
  * GSL reports through its error handler: programs using this layer call
  * gsl_set_error_handler_off() once at start-up so that failures come back

@@ -1,5 +1,5 @@
 /* semquad — critical points of the guiding field and their valences
- * (Marcon 2019 §2.3 and §3.2; ../shared/DESIGN.md "Index and valence").
+ * (Marcon 2019 §2.3 and §3.2; docs/conventions.md "Index and valence").
  *
  * design:
  *  1. flag every element where u and v both change sign on a lattice of

@@ -131,7 +131,7 @@ sq_status sq_field_analyse(const cad_face *face, const sq_field_options *opt,
     out->t_triangulate = t1 - t0;
     out->t_solve = t2 - t1;
     out->t_critical = t3 - t2;
-    /* Poincaré–Hopf with Gauss–Bonnet (../shared/DESIGN.md) */
+    /* Poincaré–Hopf with Gauss–Bonnet (docs/conventions.md) */
     for (int k = 0; k < out->npoints; k++) out->ph_lhs += 4 - out->points[k].valence;
     for (int k = 0; k < out->info.nvertices; k++) out->ph_lhs += 2 - out->corners[k].valence;
     out->ph_rhs = 4 * out->info.chi;

@@ -1,5 +1,5 @@
 /* semquad — the H field of an imposed singularity pattern (Jezdimirović
- * 2021 eq. 12, sign conventions of ../shared/DESIGN.md "H field"):
+ * 2021 eq. 12, sign conventions of docs/conventions.md "H field"):
  *
  *   ΔH = Σ_j c_j δ(X_j) in Ω,  c_j = (π/2)(4 − V_j),
  *   ∂H/∂ν = κ_g on the smooth parts of ∂Ω (ν outward, κ_g > 0 turning left),

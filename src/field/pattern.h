@@ -2,7 +2,7 @@
  * interior points with their valences, plus the number of quads at each
  * boundary vertex, read from a pattern file or taken from the guiding
  * field (`natural`), and checked against Gauss–Bonnet with Poincaré–Hopf
- * before anything is solved (../shared/DESIGN.md, "H field").
+ * before anything is solved (docs/conventions.md, "H field").
  *
  * Pattern file (docs/singularity-patterns.md): one item per line,
  *   x y valence           an interior singular point (valence 1..32)

@@ -1,5 +1,5 @@
 /* semquad — the θ field of an imposed singularity pattern (Jezdimirović
- * 2021 eq. 15, ../shared/DESIGN.md "θ field"): ∇θ = n × ∇H, i.e.
+ * 2021 eq. 15, docs/conventions.md "θ field"): ∇θ = n × ∇H, i.e.
  * θ_x = −H_y, θ_y = H_x, in least squares on the face cut along the branch
  * cut L, θ fixed at one boundary point to the tangent angle there.
  *

@@ -1,5 +1,5 @@
 /* semquad — outputs of the guiding-field stage: JSON report (keys of
- * ../shared/DESIGN.md), VTU (u, v, ψ on Lagrange triangles) and SVG
+ * docs/conventions.md), VTU (u, v, ψ on Lagrange triangles) and SVG
  * (crosses, u = 0 and v = 0 contours, singular points by valence, corner
  * valences). */
 #ifndef SQ_WRITE_FIELD_H

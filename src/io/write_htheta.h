@@ -1,5 +1,5 @@
 /* semquad — outputs of the H/θ stage: JSON report (field.kind "H-theta",
- * keys of ../shared/DESIGN.md plus the θ jumps and the holonomy check),
+ * keys of docs/conventions.md plus the θ jumps and the holonomy check),
  * VTU (point data H and theta, θ on the branch continuous off the cut) and
  * SVG (H isolines red, θ isolines blue as in Jezdimirović 2021 Fig. 10,
  * the branch cut black, the points by valence, quads per corner). */

@@ -1,4 +1,4 @@
-/* semquad — the JSON report of `semquad mesh` (../shared/DESIGN.md, "The
+/* semquad — the JSON report of `semquad mesh` (docs/conventions.md, "The
  * report"): input, field, singularities, corners, layout, mesh, timings. */
 #ifndef SQ_WRITE_MESH_REPORT_H
 #define SQ_WRITE_MESH_REPORT_H

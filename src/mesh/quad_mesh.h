@@ -40,7 +40,7 @@ void sq_quad_mesh_free(sq_quad_mesh **m); /* NULL-safe, NULLs *m */
 /* Lattice index of node (i, j) of a quad of order Q. */
 static inline int sq_quad_node(int Q, int i, int j) { return j * (Q + 1) + i; }
 
-/* Quality (../shared/DESIGN.md, Jezdimirović 2021 Table 1): per quad,
+/* Quality (docs/conventions.md, Jezdimirović 2021 Table 1): per quad,
  * eta = 1 - max_k |alpha_k - π/2| / (π/2) over the four corner angles, and
  * the scaled Jacobian min det J / max det J over the element's nodes. */
 typedef struct {
@@ -49,8 +49,8 @@ typedef struct {
     int irregular_interior; /* interior vertices with valence != 4 */
     int irregular_boundary; /* boundary vertices with valence != 2 other than corners */
     /* eta_mean, eta_min and tau_percent (and the per-quad eta) are measured
-     * on the straight corner polygon exactly as ../shared/tools/quadstats.py
-     * does, so its output on the MSH file agrees with the report; the same
+     * on the straight corner polygon (docs/conventions.md "Quality"), so a
+     * measure of the MSH file (tests/t611) agrees with the report; the same
      * statistics with the angles between the curved sides' tangents at the
      * corners (from the element's Lagrange map) are these (docs/formats.md): */
     double eta_curved_mean, eta_curved_min, tau_curved_percent;

@@ -1,9 +1,9 @@
 /* semquad — quality of a high-order quad mesh (quad_mesh.h).
  *
- * eta (Jezdimirović 2021, Table 1; ../shared/DESIGN.md "Quality") on the
- * straight corner polygon, computed exactly as ../shared/tools/quadstats.py
- * does (signed angles w.r.t. the majority orientation, in [0, 2π)), so the
- * report agrees with that tool on the MSH output; the curved variant uses
+ * eta (Jezdimirović 2021, Table 1; docs/conventions.md "Quality") on the
+ * straight corner polygon with signed angles w.r.t. the majority orientation,
+ * in [0, 2π) (docs/conventions.md), as tests/t611 measures the MSH output
+ * independently, so the report agrees with what a reader of the file finds; the curved variant uses
  * the tangents of the element's sides at its corners, from the derivative
  * of its Lagrange map.  Scaled Jacobian: min det J / max |det J| over the
  * element's (Q+1)^2 nodes.  Area: Gauss–Legendre with Q+1 points per
