@@ -5,24 +5,27 @@ written as STEP text by step_face.py, their blades cubic B-splines
 interpolating analytic profiles.
 
 cascade.step: one periodic passage of a turbine cascade.  The blade has a
-circular-arc camber line (chord 1, inlet metal angle 40 deg, outlet -60 deg:
-the classical circular-arc blade, e.g. Dixon & Hall, "Fluid Mechanics and
-Thermodynamics of Turbomachinery", ch. 3) and the half-thickness
-(t/2) sin(b) (1 + a cos(b)) at x/c = (1 - cos b)/2 (an ellipse, b in
-[0, pi], skewed by a towards the leading edge): round at both ends, the
-trailing-edge radius of curvature (t (1 - a))^2 / 2.  It is the hole, two
-cubic B-splines joined tangentially at mid-chord (no corner).  The passage
-is bounded by the inlet (x = -0.5), the outlet (x = 1.6) and two periodic
-lines one pitch apart, each of four segments: along the inlet angle, two
-chords of the mid-passage camber line, and horizontal to the outlet.  The
-plane is written with its axis along -z and the face reversed (as CADfix
-writes T106).
+circular-arc camber line (chord 1 from the leading edge (0, 0), camber-line
+angles 20 deg at the leading edge and -65 deg at the trailing edge, so the
+stagger is their mean) and the half-thickness (t/2) sin(b) (1 + a cos(b))
+at the fraction (1 - cos b)/2 of the arc, b in [0, pi] (an ellipse skewed by
+a = 0.5 towards the leading edge; t = 0.2): round at both ends, the
+trailing-edge radius of curvature (t (1 - a))^2 / 2 = 0.005.  It is the
+hole, two cubic B-splines joined tangentially at mid-chord (no corner).
+The passage is bounded by the inlet (x = -1.2), the outlet (x = 2.5) and
+two periodic lines one pitch (0.8) apart, each of four segments: along the
+inlet flow angle (36 deg) to (0.15, -0.3), horizontal to x = 0.55, along
+the outlet flow angle (-65 deg) for a drop of 1.5, horizontal to the
+outlet; the upper line passes 0.006 from the blade's suction side, a thin
+strip like T106's.  The plane is written with its axis along -z and the
+face reversed (as CADfix writes T106).
 
-aerofoil_box.step: the NACA 4412 aerofoil (the 4-digit formula with the
-closed trailing edge, Abbott & von Doenhoff, "Theory of Wing Sections",
-sec. 6.4 and 6.6; chord 0.3) in the box [-0.5, 1.5] x [-0.75, 0.75]; the
-aerofoil is the hole, two cubic B-splines (upper, lower) meeting at the
-leading edge, where the profile is smooth, and at the trailing edge corner.
+aerofoil_box.step: the NACA 4412 aerofoil (the 4-digit formula, Abbott &
+von Doenhoff, "Theory of Wing Sections", sec. 6.4, with the x^4
+coefficient -0.1036 that closes the trailing edge; chord 0.3) in the box
+[-0.5, 1.5] x [-0.75, 0.75]; the aerofoil is the hole, two cubic B-splines
+(lower, upper) meeting at the leading edge, where the profile is smooth,
+and at the trailing-edge corner.
 
 Each B-spline interpolates 121 points of the profile (spaced by arc length
 plus turning, so the round ends get their share) with the profile's own
@@ -32,7 +35,9 @@ the two edges of a blade join with one tangent.
 usage: cascade_aerofoil.py OUTDIR
 writes OUTDIR/cascade.step, OUTDIR/aerofoil_box.step and OUTDIR/NAME.facts
 (key value lines: the exact area of the face, from Green's theorem on the
-B-splines' polynomial pieces, the chord, the corners), read by the tests."""
+B-splines' polynomial pieces, the chord and the largest spacing of the
+interpolated points, the outer corners, the trailing edge), read by the
+tests."""
 import math
 import os
 import sys
@@ -142,12 +147,12 @@ def tangent(curve, b, side):
 
 def blade(b):
     """The cascade blade, b in R (period 2 pi): 0 leading edge, pi trailing
-    edge; pressure side (lower) for b in (0, pi), walked clockwise."""
+    edge; the pressure side (below the camber line) for b in (0, pi)."""
     theta = CHI1 - CHI2  # camber angle
     r = 1 / (2 * math.sin(theta / 2))
     stagger = (CHI1 + CHI2) / 2
-    s = (1 - math.cos(b)) / 2  # chord fraction
-    phi = theta / 2 - theta * s  # angle from the arc's centre, along the chord frame
+    s = (1 - math.cos(b)) / 2  # fraction of the camber arc
+    phi = theta / 2 - theta * s  # the arc point's angle seen from its centre
     cx, cy = 0.5 - r * math.sin(phi), r * math.cos(phi) - r * math.cos(theta / 2)
     nx, ny = -math.sin(phi), math.cos(phi)  # outward normal of the arc (upwards)
     half = THICK / 2 * math.sin(b) * (1 + SKEW * math.cos(b))
