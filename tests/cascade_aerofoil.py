@@ -44,6 +44,7 @@ import sys
 
 import numpy as np
 
+sys.dont_write_bytecode = True  # run at build time: nothing written into the source tree
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
 from step_face import Step  # noqa: E402 (the tests' own STEP writer)
 

@@ -83,16 +83,7 @@ int main(void)
               "aerofoil: loops %d, edges %d + %d, expected 2 loops 4 + 2", cad_face_num_loops(f),
               cad_face_loop_num_edges(f, 0), cad_face_loop_num_edges(f, 1));
         NEAR("aerofoil area (m^2)", green(f, -1, 2000), 2.989443, 1e-5);
-        double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
-        for (int e = 0; e < 4; ++e) {
-            double p[2];
-            eval(f, e, 0, p, NULL, NULL);
-            for (int d = 0; d < 2; ++d) lo[d] = fmin(lo[d], p[d]), hi[d] = fmax(hi[d], p[d]);
-        }
-        NEAR("aerofoil box xmin", lo[0], -0.5, 1e-9);
-        NEAR("aerofoil box xmax", hi[0], 1.5, 1e-9);
-        NEAR("aerofoil box ymin", lo[1], -0.75, 1e-9);
-        NEAR("aerofoil box ymax", hi[1], 0.75, 1e-9);
+        check_box("aerofoil", f, 4, (const double[4]){-0.5, -0.75, 1.5, 0.75}, 1e-9);
         NEAR("aerofoil chord (m)", loop_diameter(f, 1), 0.3124, 0.002);
         check_closed("aerofoil", f, 1e-9);
         cad_face_free(&f);

@@ -146,16 +146,7 @@ int main(int argc, char **argv)
     /* the aerofoil box: 4 lines of the box [-0.5, 1.5] x [-0.75, 0.75] */
     if (read_facts(argv[2], &k) && (f = open_face(argv[2], &m))) {
         check_face("aerofoil box", f, &k, 4);
-        double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
-        for (int e = 0; e < 4; ++e) {
-            double p[2];
-            eval(f, e, 0, p, NULL, NULL);
-            for (int d = 0; d < 2; ++d) lo[d] = fmin(lo[d], p[d]), hi[d] = fmax(hi[d], p[d]);
-        }
-        NEAR("aerofoil box xmin", lo[0], -0.5, 1e-14);
-        NEAR("aerofoil box xmax", hi[0], 1.5, 1e-14);
-        NEAR("aerofoil box ymin", lo[1], -0.75, 1e-14);
-        NEAR("aerofoil box ymax", hi[1], 0.75, 1e-14);
+        check_box("aerofoil", f, 4, (const double[4]){-0.5, -0.75, 1.5, 0.75}, 1e-14);
     }
     cad_face_free(&f);
     cad_model_free(&m);

@@ -1,6 +1,6 @@
 /* Shared by the cad/ tests (t301–t305): failure counting, the edge
  * evaluation and Green's-theorem area the face tests integrate with, loop
- * closure and loop diameter. */
+ * closure, the outer loop's box and a loop's diameter. */
 #ifndef SQ_T30X_CAD_H
 #define SQ_T30X_CAD_H
 
@@ -75,6 +75,26 @@ __attribute__((unused)) static void check_closed(const char *name, const cad_fac
             snprintf(what, sizeof what, "%s: gap between edges %d and %d", name, e, nx);
             NEAR(what, hypot(a[0] - b[0], a[1] - b[1]), 0.0, tol);
         }
+    }
+}
+
+/* The vertices of the first n edges (the outer loop) span the box
+ * [want[0], want[2]] x [want[1], want[3]] within tol. */
+__attribute__((unused)) static void check_box(const char *name, const cad_face *f, int n,
+                                              const double want[4], double tol)
+{
+    double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
+    for (int e = 0; e < n; ++e) {
+        double p[2];
+        eval(f, e, 0, p, NULL, NULL);
+        for (int d = 0; d < 2; ++d) lo[d] = fmin(lo[d], p[d]), hi[d] = fmax(hi[d], p[d]);
+    }
+    const double got[4] = {lo[0], lo[1], hi[0], hi[1]};
+    static const char *side[4] = {"xmin", "ymin", "xmax", "ymax"};
+    for (int i = 0; i < 4; ++i) {
+        char what[160];
+        snprintf(what, sizeof what, "%s box %s", name, side[i]);
+        NEAR(what, got[i], want[i], tol);
     }
 }
 
