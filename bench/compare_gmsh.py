@@ -11,7 +11,8 @@ For every examples/*.step (sphere.step excepted: not a planar face):
            Mesh.MeshSizeFactor = f, General.NumThreads = 1, generate(2),
            write MSH 4.1.  f is calibrated (a few untimed runs) until Gmsh's
            quad count is within 10 % (at worst 20 %) of semquad's.
-Both meshes are measured with /work/shared/tools/quadstats.py (or --quadstats):
+Both meshes are measured with tests/msh_quad_stats.py (or --quadstats PATH, a
+script printing the same JSON keys):
 quads, leftover triangles, interior irregular vertices, eta mean, eta worst,
 tau = % of quads with eta > 0.9.  Times are medians of --runs runs, two for
 each mesher: the whole process (wall clock; peak memory is its max RSS,
@@ -42,9 +43,7 @@ import time
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 BUILD = os.path.join(ROOT, "build-release")
 SEMQUAD = os.path.join(BUILD, "src", "semquad")
-QUADSTATS_DEFAULT = os.path.normpath(os.path.join(ROOT, "..", "shared", "tools", "quadstats.py"))
-if not os.path.exists(QUADSTATS_DEFAULT):
-    QUADSTATS_DEFAULT = "/work/shared/tools/quadstats.py"
+QUADSTATS_DEFAULT = os.path.join(ROOT, "tests", "msh_quad_stats.py")
 PY = "/usr/bin/python3"  # the interpreter with Debian's gmsh module
 
 
@@ -92,7 +91,7 @@ def timed(cmd):
 
 
 def quadstats(qs, msh):
-    p = subprocess.run([PY, qs, msh, "--json"], stdout=subprocess.PIPE,
+    p = subprocess.run([PY, qs, msh], stdout=subprocess.PIPE,
                        stderr=subprocess.PIPE, text=True)
     if p.returncode != 0:
         return None
@@ -304,7 +303,7 @@ def main():
           "(Gmsh: %s); *in-process*: reading the STEP file to the mesh file written (Gmsh: "
           "open + generate + write timed inside a Python child, which on its own takes "
           "%.3f s and %.0f MiB to start Python and import gmsh; semquad: its report's "
-          "timings_s.total). Peak RSS of the process. Quality columns from quadstats.py on "
+          "timings_s.total). Peak RSS of the process. Quality columns from msh_quad_stats.py on "
           "the .msh files.\n"
           % (a.runs, "Debian's gmsh 4.8.4 executable with the same options on its command "
              "line" if how == "exe" else "Python child's import + initialize + run, the "

@@ -1,11 +1,12 @@
 #!/bin/sh
 # Install exactly the Debian 12 packages semquad needs to build, test and draw.
-# python3-gmsh (with /usr/bin/python3) is for t604, Gmsh's own reader on our
-# MSH output, and t603's run of ../shared/tools/quadstats.py; both skip (77)
-# without it.  gmsh (the executable, same 4.8.4 library) is what
-# bench/compare_gmsh.py times against.  python3-numpy is what the semquad
-# Python package (python/) returns its arrays in, python3-meshio what
-# Mesh.to_meshio converts to; t960 runs the package.
+# python3-gmsh (with /usr/bin/python3) is Gmsh's own reader on our MSH
+# output: t604, and tests/msh_quad_stats.py (t603, t611, t616).  gmsh (the
+# executable, same 4.8.4 library) is what bench/compare_gmsh.py times
+# against.  python3-numpy is what tests/cascade_aerofoil.py interpolates its
+# B-splines with at build time and what the semquad Python package
+# (python/) returns its arrays in, python3-meshio what Mesh.to_meshio
+# converts to; t960 runs the package.
 # Idempotent: quiet when everything is present; runs apt-get update only when
 # something is missing.
 set -eu

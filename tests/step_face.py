@@ -1,10 +1,10 @@
-"""Test helper: a STEP file of one planar face in z = 0 (mm or inch), written
-as text (AP214: lines, circles and cubic B-splines; no p-curves, the reader
-makes them), so that tests build their own faces without Gmsh."""
+"""Test helper: a STEP file of one planar face in z = 0 (mm, inch or metre),
+written as text (AP214: lines, circles and cubic B-splines; no p-curves, the
+reader makes them), so that tests build their own faces without Gmsh."""
 
 
 class Step:
-    """Minimal AP214 writer of one planar face in z = 0, in mm or inch."""
+    """Minimal AP214 writer of one planar face in z = 0, in mm, inch or m."""
 
     def __init__(self, unit="mm"):
         self.ents = []
@@ -58,25 +58,43 @@ class Step:
         ec = self.add("EDGE_CURVE('',%s,%s,%s,.T.)" % (v0, v1, self.add("LINE('',%s,%s)" % (self.pt(*p), vec))))
         return self.add("ORIENTED_EDGE('',*,*,%s,.T.)" % ec)
 
+    def vertex(self, p):
+        return self.add("VERTEX_POINT('',%s)" % self.pt(*p))
+
+    def bspline(self, v0, v1, poles, knots, mults, weights=None):
+        """An oriented edge: the clamped cubic B-spline of these poles, knots
+        and multiplicities (weights: rational), vertices v0, v1.  A
+        non-rational one is the simple entity (OpenCASCADE's reader knows
+        the complex one only with RATIONAL_B_SPLINE_CURVE in it)."""
+        curve = "3,(%s),.UNSPECIFIED.,.F.,.F." % ",".join(self.pt(*p) for p in poles)
+        with_knots = "(%s),(%s),.UNSPECIFIED." % (",".join(map(str, mults)),
+                                                  ",".join(self.real(k) for k in knots))
+        if weights:
+            bsp = self.add("( BOUNDED_CURVE() B_SPLINE_CURVE(%s) B_SPLINE_CURVE_WITH_KNOTS(%s) CURVE() "
+                           "GEOMETRIC_REPRESENTATION_ITEM() RATIONAL_B_SPLINE_CURVE((%s)) "
+                           "REPRESENTATION_ITEM('') )" % (curve, with_knots,
+                                                          ",".join(map(self.real, weights))))
+        else:
+            bsp = self.add("B_SPLINE_CURVE_WITH_KNOTS('',%s,%s)" % (curve, with_knots))
+        ec = self.add("EDGE_CURVE('',%s,%s,%s,.T.)" % (v0, v1, bsp))
+        return self.add("ORIENTED_EDGE('',*,*,%s,.T.)" % ec)
+
+    def loop(self, oriented_edges):
+        return self.add("EDGE_LOOP('',(%s))" % ",".join(oriented_edges))
+
     def bspline_loop(self, poles, weights=None, knots=None):
         """A cubic B-spline (clamped; knots: its n + 1 distinct knots, by
         default 0, 1, ..., n; weights: rational) from the first pole to the
         last, closed by a line back."""
-        v0 = self.add("VERTEX_POINT('',%s)" % self.pt(*poles[0]))
-        v1 = self.add("VERTEX_POINT('',%s)" % self.pt(*poles[-1]))
+        v0, v1 = self.vertex(poles[0]), self.vertex(poles[-1])
         n = len(poles) - 3  # knot spans
-        curve = "B_SPLINE_CURVE(3,(%s),.UNSPECIFIED.,.F.,.F.)" % ",".join(self.pt(*p) for p in poles)
-        with_knots = "B_SPLINE_CURVE_WITH_KNOTS((%s),(%s),.UNSPECIFIED.)" % (
-            ",".join(["4"] + ["1"] * (n - 1) + ["4"]),
-            ",".join(self.real(k) for k in (knots or range(n + 1))))
-        rational = "RATIONAL_B_SPLINE_CURVE((%s))" % ",".join(map(self.real, weights)) if weights else ""
-        bsp = self.add("( BOUNDED_CURVE() %s %s CURVE() GEOMETRIC_REPRESENTATION_ITEM() %s "
-                       "REPRESENTATION_ITEM('') )" % (curve, with_knots, rational))
-        ec = self.add("EDGE_CURVE('',%s,%s,%s,.T.)" % (v0, v1, bsp))
-        oes = [self.add("ORIENTED_EDGE('',*,*,%s,.T.)" % ec), self.line(v1, v0, poles[-1], poles[0])]
-        return self.add("EDGE_LOOP('',(%s))" % ",".join(oes))
+        first = self.bspline(v0, v1, poles, list(knots or range(n + 1)), [4] + [1] * (n - 1) + [4],
+                             weights)
+        return self.loop([first, self.line(v1, v0, poles[-1], poles[0])])
 
     def length_unit(self):
+        if self.unit == "m":
+            return self.add("( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT($,.METRE.) )")
         mm = self.add("( LENGTH_UNIT() NAMED_UNIT(*) SI_UNIT(.MILLI.,.METRE.) )")
         if self.unit == "mm":
             return mm
@@ -84,11 +102,19 @@ class Step:
         d = self.add("DIMENSIONAL_EXPONENTS(1.,0.,0.,0.,0.,0.,0.)")
         return self.add("( CONVERSION_BASED_UNIT('INCH',%s) LENGTH_UNIT() NAMED_UNIT(%s) )" % (m, d))
 
-    def write(self, path, loops):
+    def write(self, path, loops, plane_down=False):
+        """plane_down: the plane's axis along -z and the face of reversed
+        sense (its normal still +z), as some CAD systems write planes."""
         bounds = [self.add("%s('',%s,.T.)" % ("FACE_OUTER_BOUND" if i == 0 else "FACE_BOUND", l))
                   for i, l in enumerate(loops)]
-        face = self.add("ADVANCED_FACE('',(%s),%s,.T.)" % (",".join(bounds),
-                                                           self.add("PLANE('',%s)" % self.axis(0, 0))))
+        if plane_down:
+            axis = self.add("AXIS2_PLACEMENT_3D('',%s,%s,%s)" % (self.pt(0, 0), self.dirn(0, 0, -1),
+                                                                 self.dirn(1, 0)))
+        else:
+            axis = self.axis(0, 0)
+        face = self.add("ADVANCED_FACE('',(%s),%s,%s)" % (",".join(bounds),
+                                                          self.add("PLANE('',%s)" % axis),
+                                                          ".F." if plane_down else ".T."))
         mm = self.length_unit()
         rad = self.add("( NAMED_UNIT(*) PLANE_ANGLE_UNIT() SI_UNIT($,.RADIAN.) )")
         sr = self.add("( NAMED_UNIT(*) SI_UNIT($,.STERADIAN.) SOLID_ANGLE_UNIT() )")

@@ -1,6 +1,8 @@
-/* t304 — real CAD files written by others (../shared/geometries/real):
- * units kept (metres), areas, edges, holes, default face.  Skips (77) if
- * SQ_REAL is not set or the folder is not readable.
+/* t304 — optional real CAD files written by others (NekMesh's test inputs,
+ * tests/README.md): units kept (metres), areas, edges, holes, default face.
+ * Skips (77) with one line if $SEMQUAD_REAL_GEOMETRIES does not name a
+ * folder holding them (t305 checks the same on the project's own cascade
+ * and aerofoil box).
  * Tolerances: areas and boxes are against values with 6 to 7 significant
  * digits (the files' READMEs), so 1e-5 of m^2 and 1e-9 of a box side given
  * exactly; frames are OCC's unit axes, exact up to a few U (1e-15); the
@@ -10,44 +12,12 @@
  * within the code's 1e-9 L arc-length slack (check_closed). */
 #include "cad.h"
 #include "t30x_cad.h"
+#include "test_util.h"
 
 #include <math.h>
 #include <stdio.h>
 #include <stdlib.h>
 #include <string.h>
-#include <unistd.h>
-
-static void check_closed(const char *name, const cad_face *f, double tol)
-{
-    for (int l = 0; l < cad_face_num_loops(f); ++l) {
-        int first = cad_face_loop_first_edge(f, l), n = cad_face_loop_num_edges(f, l);
-        for (int k = 0; k < n; ++k) {
-            int e = first + k, nx = first + (k + 1) % n;
-            double a[2], b[2];
-            eval(f, e, cad_face_edge_length(f, e), a, NULL, NULL);
-            eval(f, nx, 0, b, NULL, NULL);
-            char what[200];
-            snprintf(what, sizeof what, "%s: gap between edges %d and %d", name, e, nx);
-            NEAR(what, hypot(a[0] - b[0], a[1] - b[1]), 0.0, tol);
-        }
-    }
-}
-
-/* Largest distance between two points of loop l (sampled). */
-static double loop_diameter(const cad_face *f, int l)
-{
-    enum { N = 400 };
-    static double pts[4 * N][2];
-    int np = 0;
-    for (int e = 0; e < cad_face_num_edges(f); ++e) {
-        if (cad_face_edge_loop(f, e) != l) continue;
-        for (int i = 0; i < N && np < 4 * N; ++i) eval(f, e, cad_face_edge_length(f, e) * i / N, pts[np++], NULL, NULL);
-    }
-    double d = 0;
-    for (int i = 0; i < np; ++i)
-        for (int j = i + 1; j < np; ++j) d = fmax(d, hypot(pts[i][0] - pts[j][0], pts[i][1] - pts[j][1]));
-    return d;
-}
 
 static cad_model *read_model(const char *dir, const char *file)
 {
@@ -64,11 +34,9 @@ static cad_model *read_model(const char *dir, const char *file)
 
 int main(void)
 {
-    const char *dir = getenv("SQ_REAL");
     char probe[4096];
-    if (!dir) return 77;
-    snprintf(probe, sizeof probe, "%s/real_t106_cascade.step", dir);
-    if (access(probe, R_OK) != 0) return 77;
+    if (!sq_test_path(probe, sizeof probe, 1, "real_t106_cascade.step")) return 77;
+    const char *dir = getenv("SEMQUAD_REAL_GEOMETRIES");
     sq_error err;
     cad_face *f = NULL;
 
@@ -115,16 +83,7 @@ int main(void)
               "aerofoil: loops %d, edges %d + %d, expected 2 loops 4 + 2", cad_face_num_loops(f),
               cad_face_loop_num_edges(f, 0), cad_face_loop_num_edges(f, 1));
         NEAR("aerofoil area (m^2)", green(f, -1, 2000), 2.989443, 1e-5);
-        double lo[2] = {HUGE_VAL, HUGE_VAL}, hi[2] = {-HUGE_VAL, -HUGE_VAL};
-        for (int e = 0; e < 4; ++e) {
-            double p[2];
-            eval(f, e, 0, p, NULL, NULL);
-            for (int d = 0; d < 2; ++d) lo[d] = fmin(lo[d], p[d]), hi[d] = fmax(hi[d], p[d]);
-        }
-        NEAR("aerofoil box xmin", lo[0], -0.5, 1e-9);
-        NEAR("aerofoil box xmax", hi[0], 1.5, 1e-9);
-        NEAR("aerofoil box ymin", lo[1], -0.75, 1e-9);
-        NEAR("aerofoil box ymax", hi[1], 0.75, 1e-9);
+        check_box("aerofoil", f, 4, (const double[4]){-0.5, -0.75, 1.5, 0.75}, 1e-9);
         NEAR("aerofoil chord (m)", loop_diameter(f, 1), 0.3124, 0.002);
         check_closed("aerofoil", f, 1e-9);
         cad_face_free(&f);

@@ -1,6 +1,6 @@
 /* Corners, interior angles, loops, chi and area (Green's theorem on the exact
- * curves) of every example face and of the real CAD files, against
- * ../shared/geometries/README.md and ../shared/geometries/real/README.md.
+ * curves) of every example face and of the optional real CAD files, against
+ * examples/README.md and the real files' own README (tests/README.md).
  * Tolerances (no BLAS): the area is GSL's QAG to 1e-13 relative of each
  * edge's integral (src/face/face_info.c), exact curves in closed form: 1e-12 for
  * the examples, 1e-6 where the expected value has 7 digits (the real files,
@@ -21,7 +21,7 @@ typedef struct {
 
 typedef struct {
     const char *file;
-    int real;       /* in SQ_REAL rather than SQ_EXAMPLES */
+    int real;       /* in $SEMQUAD_REAL_GEOMETRIES rather than SQ_EXAMPLES */
     int face;       /* -1: default face */
     const char *unit;
     double area, area_rtol;
@@ -140,12 +140,12 @@ int main(void)
          {{-50.14393, -50.00122, 90}, {49.99620, -50.00122, 90}, {49.99620, 49.93208, 90},
           {-50.14393, 49.93208, 90}}, 0, {0}},
     };
-    int fails = 0, skipped = 0;
+    int fails = 0, real_missing = 0;
     for (size_t i = 0; i < sizeof cases / sizeof *cases; i++) {
+        if (cases[i].real && real_missing) continue; /* one line says they are absent */
         int r = check_case(&cases[i]);
-        if (r == 77) skipped++;
+        if (r == 77) real_missing = 1;
         else fails += r;
     }
-    if (skipped) printf("skipped %d real files (SQ_REAL not readable)\n", skipped);
     return fails ? 1 : 0;
 }

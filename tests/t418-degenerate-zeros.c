@@ -16,7 +16,7 @@
  *    exactly 2 points, meshed with 2 interior irregular vertices.
  * Counts are integers (no tolerance).  Every example keeps its route
  * (guiding; the disc two-step for its split centre) with as many singular
- * points as its Gauss–Bonnet minimum (../shared/geometries/README.md), no
+ * points as its Gauss–Bonnet minimum (examples/README.md), no
  * pair cancelled.  sq_cancel_pairs on synthetic points: nearest pair
  * first, only below the distance given, the others in order. */
 #include "degenerate_split.h"

@@ -2,9 +2,10 @@
  * 16-node quads; the files re-read by a small parser (sections, counts,
  * element types for Q = 1..10, node positions = the element map at Gmsh's
  * equispaced reference points, physical groups); and
- * ../shared/tools/quadstats.py on the files agrees with
- * sq_quad_mesh_quality (exit 77 after the own checks if that script or
- * python3 is missing).  argv[1]: path of quadstats.py. */
+ * tests/msh_quad_stats.py (an independent measure through Gmsh's own
+ * reader) on the files agrees with sq_quad_mesh_quality (exit 77 after the
+ * own checks if python3 with gmsh and numpy is missing).  argv[1]: path of
+ * msh_quad_stats.py. */
 #include "quad_order.h"
 #include "t6xx-quad-meshes.h"
 #include "write_msh.h"
@@ -206,18 +207,18 @@ static double json_num(const char *s, const char *key, int *missing)
     const char *p = strstr(s, k);
     if (!p) {
         (*missing)++;
-        printf("quadstats: no key %s\n", key);
+        printf("msh_quad_stats: no key %s\n", key);
         return NAN;
     }
     return strtod(p + strlen(k), NULL);
 }
 
-/* quadstats.py on the file agrees with sq_quad_mesh_quality. */
-static int check_quadstats(const char *py, const char *qs, const char *path, const sq_quad_mesh *m,
+/* msh_quad_stats.py on the file agrees with sq_quad_mesh_quality. */
+static int check_msh_quad_stats(const char *py, const char *qs, const char *path, const sq_quad_mesh *m,
                            const char *ctx)
 {
     char cmd[2048], buf[8192];
-    snprintf(cmd, sizeof cmd, "'%s' '%s' --json '%s'", py, qs, path);
+    snprintf(cmd, sizeof cmd, "'%s' '%s' '%s'", py, qs, path);
     FILE *pp = popen(cmd, "r");
     if (!pp) return printf("%s: cannot run %s\n", ctx, cmd), 1;
     size_t n = fread(buf, 1, sizeof buf - 1, pp);
@@ -228,22 +229,22 @@ static int check_quadstats(const char *py, const char *qs, const char *path, con
     sq_error err;
     SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, &q, &err), err);
     int f = 0, miss = 0;
-    f += sq_check_int(ctx, "quadstats quads", (long)json_num(buf, "quads", &miss), m->nquads);
-    /* quadstats.py recomputes eta from the %.17g nodes: the same angles, a
-     * few U each, and the JSON's digits; tau is a ratio of counts */
-    f += sq_check_abs(ctx, "quadstats eta_mean", json_num(buf, "eta_mean", &miss), q.eta_mean, 1e-12);
-    f += sq_check_abs(ctx, "quadstats eta_min", json_num(buf, "eta_min", &miss), q.eta_min, 1e-12);
-    f += sq_check_abs(ctx, "quadstats eta_pct_gt_0.9", json_num(buf, "eta_pct_gt_0.9", &miss),
+    f += sq_check_int(ctx, "msh_quad_stats quads", (long)json_num(buf, "quads", &miss), m->nquads);
+    /* msh_quad_stats.py recomputes eta from the %.17g nodes: the same
+     * angles, a few U each, and the JSON's digits; tau is a ratio of counts */
+    f += sq_check_abs(ctx, "msh_quad_stats eta_mean", json_num(buf, "eta_mean", &miss), q.eta_mean, 1e-12);
+    f += sq_check_abs(ctx, "msh_quad_stats eta_min", json_num(buf, "eta_min", &miss), q.eta_min, 1e-12);
+    f += sq_check_abs(ctx, "msh_quad_stats eta_pct_gt_0.9", json_num(buf, "eta_pct_gt_0.9", &miss),
                       q.tau_percent, 1e-9);
-    f += sq_check_int(ctx, "quadstats interior_irregular",
+    f += sq_check_int(ctx, "msh_quad_stats interior_irregular",
                       (long)json_num(buf, "interior_irregular", &miss), q.irregular_interior);
-    f += sq_check_int(ctx, "quadstats boundary_irregular",
+    f += sq_check_int(ctx, "msh_quad_stats boundary_irregular",
                       (long)json_num(buf, "boundary_irregular", &miss), q.irregular_boundary);
-    f += sq_check_int(ctx, "quadstats inverted_quads", (long)json_num(buf, "inverted_quads", &miss), 0);
-    f += sq_check_int(ctx, "quadstats vertices", (long)json_num(buf, "vertices", &miss), q.vertices);
-    f += sq_check_int(ctx, "quadstats boundary_vertices",
+    f += sq_check_int(ctx, "msh_quad_stats inverted_quads", (long)json_num(buf, "inverted_quads", &miss), 0);
+    f += sq_check_int(ctx, "msh_quad_stats vertices", (long)json_num(buf, "vertices", &miss), q.vertices);
+    f += sq_check_int(ctx, "msh_quad_stats boundary_vertices",
                       (long)json_num(buf, "boundary_vertices", &miss), q.boundary_vertices);
-    f += sq_check_int(ctx, "quadstats euler_chi", (long)json_num(buf, "euler_chi", &miss), 1);
+    f += sq_check_int(ctx, "msh_quad_stats euler_chi", (long)json_num(buf, "euler_chi", &miss), 1);
     return f + miss;
 }
 
@@ -252,10 +253,11 @@ int main(int argc, char **argv)
     int f = check_orders();
     char dir[] = "/tmp/sq_t603_XXXXXX";
     if (!mkdtemp(dir)) return printf("cannot make a temporary directory\n"), 1;
-    const char *qs = argc > 1 ? argv[1] : "../shared/tools/quadstats.py";
-    if (access(qs, R_OK) != 0) qs = "/work/shared/tools/quadstats.py";
+    const char *qs = argc > 1 ? argv[1] : "tests/msh_quad_stats.py";
     const char *py = find_python();
-    int have_qs = py && access(qs, R_OK) == 0, qs_runs = 0;
+    char probe[256];
+    snprintf(probe, sizeof probe, "'%s' -c 'import gmsh, numpy' 2>/dev/null", py ? py : "false");
+    int have_qs = py && access(qs, R_OK) == 0 && system(probe) == 0, qs_runs = 0;
     char path[256];
     for (int Q = 1; Q <= 10; Q++)
         for (int k = 0; k < 2; k++)
@@ -269,9 +271,9 @@ int main(int argc, char **argv)
                 sq_error err;
                 SQ_TEST_OK(sq_write_msh(path, m, &err), err);
                 f += check_file(path, m, ctx);
-                /* quadstats is slow-ish in Python: a subset of orders */
+                /* Gmsh's start-up per file: a subset of orders */
                 if (have_qs && (Q == 1 || Q == 2 || Q == 4 || Q == 10)) {
-                    f += check_quadstats(py, qs, path, m, ctx);
+                    f += check_msh_quad_stats(py, qs, path, m, ctx);
                     qs_runs++;
                 }
                 remove(path);

@@ -52,16 +52,29 @@ static inline int sq_check_str(const char *ctx, const char *what, const char *go
         }                                                                                          \
     } while (0)
 
-/* Path of an example (real = 0: $SQ_EXAMPLES) or real CAD file (real = 1:
- * $SQ_REAL).  Returns 0 if the real files are not available (skip). */
+/* The line a test prints when an optional CAD file written by others is
+ * absent (tests/README.md, "Optional real geometries"). */
+static inline void sq_test_real_missing(const char *path)
+{
+    printf("%s: not found; to run the checks on the optional real geometries, configure "
+           "with -Dreal_geometries=DIR or set SEMQUAD_REAL_GEOMETRIES=DIR (tests/README.md)\n",
+           path);
+}
+
+/* Path of an example (real = 0: $SQ_EXAMPLES) or of an optional real CAD
+ * file (real = 1: $SEMQUAD_REAL_GEOMETRIES).  Returns 0, after printing
+ * sq_test_real_missing's line, if that real file is not readable (skip). */
 static inline int sq_test_path(char *buf, size_t n, int real, const char *file)
 {
-    const char *dir = getenv(real ? "SQ_REAL" : "SQ_EXAMPLES");
-    if (!dir) dir = real ? "../shared/geometries/real" : "examples";
+    const char *dir = getenv(real ? "SEMQUAD_REAL_GEOMETRIES" : "SQ_EXAMPLES");
+    if (!dir) dir = real ? "(SEMQUAD_REAL_GEOMETRIES unset)" : "examples";
     snprintf(buf, n, "%s/%s", dir, file);
     if (!real) return 1;
     FILE *fp = fopen(buf, "rb");
-    if (!fp) return 0;
+    if (!fp) {
+        sq_test_real_missing(buf);
+        return 0;
+    }
     fclose(fp);
     return 1;
 }
