@@ -174,6 +174,17 @@ SQ_API void sq_options_init(sq_options *o);
  * options, this checks them all before any work. */
 SQ_API sq_status sq_options_check(const sq_options *o, sq_error *err);
 
+/* ---- Output files -------------------------------------------------------
+ * Every writer (sq_*_write, sq_*_write_report) writes a regular file, all
+ * or nothing (a temporary file beside it, renamed when complete), or, for
+ * the path "-", standard output (text formats; not STEP).  A path naming a
+ * directory, a FIFO, a device or a socket is refused with SQ_ERR_USAGE
+ * before anything is written: a rename would replace it with a file. */
+
+/* SQ_ERR_USAGE if path names something other than a regular file, a new
+ * file or "-" (check every output before the work that makes it). */
+SQ_API sq_status sq_output_check(const char *path, sq_error *err);
+
 /* ---- A CAD model -------------------------------------------------------- */
 
 typedef struct sq_model sq_model;
@@ -324,6 +335,10 @@ SQ_API sq_status sq_mesh_describe(const sq_mesh *m, char **text, sq_error *err);
  * .xml (Nektar++), .vtu (VTK), .svg (a picture).  Nothing is left at path
  * on failure. */
 SQ_API sq_status sq_mesh_write(const sq_mesh *m, const char *path, sq_error *err);
+/* The same in the format named ("msh", "xml", "vtu" or "svg"; NULL: by
+ * the extension), whatever path's name; path "-" is standard output. */
+SQ_API sq_status sq_mesh_write_format(const sq_mesh *m, const char *path, const char *format,
+                                      sq_error *err);
 /* 1 if sq_mesh_write knows path's format, else 0 (check before meshing). */
 SQ_API int sq_mesh_format_known(const char *path);
 
