@@ -73,6 +73,8 @@ expect 2 "--format expects msh, xml or vtu" mesh "$ex/half_disc.step" --format s
 expect 2 "-o and --no-output" mesh "$ex/half_disc.step" -o "$tmp/x.msh" --no-output
 expect 2 "only one output can go to standard output" mesh "$ex/half_disc.step" -o - --report -
 expect 2 "help: unknown command" help frobnicate
+expect 2 "mesh --svg: cannot go to standard output" mesh "$ex/half_disc.step" --svg -
+expect 2 "layout --output: cannot go to standard output" layout "$ex/half_disc.step" -o -
 # the deprecated spelling: one warning line, the same result as the new one
 for c in field layout; do
     "$sq" $c "$ex/square.step" --field-order 3 --report "$tmp/new.json" >"$tmp/new" 2>"$tmp/err" || fail "$c --field-order 3: $(cat "$tmp/err")"

@@ -65,6 +65,7 @@ typedef struct {
     sq_cli_parse_fn parse; /* CUSTOM */
     const char *alias_of; /* a deprecated spelling of that option (one release) */
     int shared;           /* one of the options every command reading a face takes */
+    int stdout_ok;        /* OUTPUT: "-" (standard output) allowed (a text format) */
 } sq_cli_opt;
 
 #define SQ_CLI_AT(field) offsetof(sq_cli_args, field)
@@ -86,13 +87,17 @@ typedef struct {
 #define SQ_CLI_OPT_QUIET                                                                           \
     {.name = "quiet", .short_name = 'q', .kind = SQ_CLI_FLAG, .set = 1, .def = "off",              \
      .help = "print nothing but errors", .target = SQ_CLI_AT(quiet), .shared = 1}
+/* The rows of every command that reads a face: --face, the healing
+ * options, -q. */
+#define SQ_CLI_OPTS_READING                                                                        \
+    SQ_CLI_OPT_FACE, SQ_CLI_OPT_HEAL_TOLERANCE, SQ_CLI_OPT_NO_HEAL, SQ_CLI_OPT_QUIET
 #define SQ_CLI_OPT_SVG(what)                                                                       \
     {.name = "svg", .kind = SQ_CLI_OUTPUT, .value = "FILE", .def = "none", .help = (what),         \
      .target = SQ_CLI_AT(svg)}
 #define SQ_CLI_OPT_REPORT                                                                          \
     {.name = "report", .kind = SQ_CLI_OUTPUT, .value = "FILE", .def = "none",                      \
      .help = "the JSON report (docs/formats.md); - for standard output",                           \
-     .target = SQ_CLI_AT(report)}
+     .target = SQ_CLI_AT(report), .stdout_ok = 1}
 #define SQ_CLI_OPT_METHOD                                                                          \
     {.name = "method", .kind = SQ_CLI_WORD, .value = "auto|cg|dg", .def = "auto",                  \
      .help = "the field's solver; auto: CG where every corner is a multiple of 90 deg, else DG",   \
@@ -104,6 +109,10 @@ typedef struct {
     {.name = "order", .kind = SQ_CLI_INT, .value = "P", .lo = 1, .hi = 16,                         \
      .help = "deprecated spelling of --field-order (removed in the next release)",                 \
      .target = SQ_CLI_AT(opt.field_order), .alias_of = "field-order"}
+#define SQ_CLI_OPT_FIELD_SIZE                                                                      \
+    {.name = "size", .kind = SQ_CLI_REAL, .value = "H", .lo = 1e-300, .hi = 1e300,                 \
+     .def = "sqrt(area)/3", .unit = "file unit", .help = "longest edge of the field's triangles",  \
+     .target = SQ_CLI_AT(opt.tri_size)}
 #define SQ_CLI_OPT_SINGULARITIES                                                                   \
     {.name = "singularities", .kind = SQ_CLI_WORD, .value = "FILE|natural", .def = "none",         \
      .help = "impose a singularity pattern (docs/singularity-patterns.md) and use its H/theta field", \
@@ -122,7 +131,7 @@ typedef struct {
  * it does once the options are parsed. */
 typedef struct {
     const char *name;
-    const char *summary; /* one paragraph, lines of at most 80 characters */
+    const char *summary; /* one paragraph (help wraps it) */
     const char *example; /* a whole command line */
     const sq_cli_opt *opts;
     sq_status (*run)(sq_cli_args *a, sq_error *err);

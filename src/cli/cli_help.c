@@ -32,7 +32,9 @@ static void wrapped(const char *text, int col)
 
 void sq_cli_usage(const sq_cli_command *c)
 {
-    printf("usage: semquad %s FILE [options]\n\n%s\n\noptions:\n", c->name, c->summary);
+    printf("usage: semquad %s FILE [options]\n\n", c->name);
+    wrapped(c->summary, 0);
+    printf("\noptions:\n");
     for (const sq_cli_opt *o = c->opts; o->name; o++) {
         char words[96], def[256];
         option_words(o, words, sizeof words);
@@ -70,16 +72,6 @@ static void command_line(const sq_cli_command *c)
     putchar('\n');
 }
 
-/* The summary, indented by 6. */
-static void indented(const char *text)
-{
-    for (const char *p = text; *p;) {
-        size_t n = strcspn(p, "\n");
-        printf("      %.*s\n", (int)n, p);
-        p += n + (p[n] == '\n');
-    }
-}
-
 void sq_cli_overview(void)
 {
     printf("semquad %s - block-structured high-order quad meshes of planar CAD faces\n\n"
@@ -89,7 +81,8 @@ void sq_cli_overview(void)
            sq_version());
     for (const sq_cli_command *const *c = sq_cli_commands(); *c; c++) {
         command_line(*c);
-        indented((*c)->summary);
+        printf("%*s", 6, "");
+        wrapped((*c)->summary, 6);
     }
     fputs("  help [COMMAND]       this text, or the options of COMMAND\n"
           "  --version            the version\n"

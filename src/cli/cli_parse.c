@@ -110,13 +110,16 @@ static const sq_cli_opt *row_of(const sq_cli_command *c, int val)
     return NULL;
 }
 
-/* Every output names a regular file (or "-", at most once): refused before
- * any work otherwise. */
+/* Every output names a regular file (or "-", standard output, where the
+ * row allows it, at most once): refused before any work otherwise. */
 static sq_status check_outputs(const sq_cli_command *c, sq_cli_args *a, sq_error *err)
 {
     for (const sq_cli_opt *o = c->opts; o->name; o++) {
         const char *path = o->kind == SQ_CLI_OUTPUT ? *(const char **)((char *)a + o->target) : NULL;
         if (!path) continue;
+        if (!strcmp(path, "-") && !o->stdout_ok)
+            return SQ_FAIL(err, SQ_ERR_USAGE, "%s --%s: cannot go to standard output (-): name a file",
+                           c->name, o->name);
         if (!strcmp(path, "-") && a->to_stdout++)
             return SQ_FAIL(err, SQ_ERR_USAGE, "%s: only one output can go to standard output (-)",
                            c->name);

@@ -82,17 +82,14 @@ static const sq_cli_opt converge_opts[] = {
     {.name = "csv", .kind = SQ_CLI_OUTPUT, .value = "FILE", .def = "none",
      .help = "every run as CSV: method,P,h,dofs,L2,H1", .target = SQ_CLI_AT(csv)},
     SQ_CLI_OPT_SVG("log-log plot of the errors against the degrees of freedom"),
-    SQ_CLI_OPT_FACE,
-    SQ_CLI_OPT_HEAL_TOLERANCE,
-    SQ_CLI_OPT_NO_HEAL,
-    SQ_CLI_OPT_QUIET,
+    SQ_CLI_OPTS_READING,
     {0}};
 
 const sq_cli_command sq_cli_converge = {
     .name = "converge",
-    .summary = "Convergence study of the CG/DG Poisson solvers: -lap u = 0 with u an exact\n"
-               "harmonic solution on the whole boundary, every order on every size. Table on\n"
-               "stdout; CSV of every run; SVG log-log plot of the errors against dofs\n"
+    .summary = "Convergence study of the CG/DG Poisson solvers: -lap u = 0 with u an exact "
+               "harmonic solution on the whole boundary, every order on every size. Table on "
+               "stdout; CSV of every run; SVG log-log plot of the errors against dofs "
                "(p-refinement, or h-refinement per P with several sizes).",
     .example = "semquad converge examples/square.step --orders 1-8 --csv square.csv",
     .opts = converge_opts,

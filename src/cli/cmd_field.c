@@ -26,9 +26,7 @@ static const sq_cli_opt field_opts[] = {
      .help = "the same as -o", .target = SQ_CLI_AT(output)},
     SQ_CLI_OPT_FIELD_ORDER("8"),
     SQ_CLI_OPT_METHOD,
-    {.name = "size", .kind = SQ_CLI_REAL, .value = "H", .lo = 1e-300, .hi = 1e300,
-     .def = "sqrt(area)/3", .unit = "file unit", .help = "longest edge of the field's triangles",
-     .target = SQ_CLI_AT(opt.tri_size)},
+    SQ_CLI_OPT_FIELD_SIZE,
     {.name = "geom-order", .kind = SQ_CLI_INT, .value = "G", .lo = 1, .hi = 12,
      .def = "the field's order, at most 12", .help = "order of the curved triangles (1..12)",
      .target = SQ_CLI_AT(opt.tri_order)},
@@ -39,19 +37,16 @@ static const sq_cli_opt field_opts[] = {
      .target = SQ_CLI_AT(opt.field_grading)},
     SQ_CLI_OPT_SVG("crosses, zero contours and singular points"),
     SQ_CLI_OPT_REPORT,
-    SQ_CLI_OPT_FACE,
-    SQ_CLI_OPT_HEAL_TOLERANCE,
-    SQ_CLI_OPT_NO_HEAL,
-    SQ_CLI_OPT_QUIET,
+    SQ_CLI_OPTS_READING,
     SQ_CLI_OPT_ORDER_ALIAS,
     {0}};
 
 const sq_cli_command sq_cli_field = {
     .name = "field",
-    .summary = "The guiding field (u,v) = (cos 4t, sin 4t) of Marcon et al. 2019, its critical\n"
-               "points with valences, the corner valences, the Poincare-Hopf check. With\n"
-               "--singularities, the H and theta fields of an imposed pattern (FILE: lines\n"
-               "'x y valence' and 'corner x y quads'; natural: the guiding field's points):\n"
+    .summary = "The guiding field (u,v) = (cos 4t, sin 4t) of Marcon et al. 2019, its critical "
+               "points with valences, the corner valences, the Poincare-Hopf check. With "
+               "--singularities, the H and theta fields of an imposed pattern (FILE: lines "
+               "'x y valence' and 'corner x y quads'; natural: the guiding field's points): "
                "Gauss-Bonnet check (exit 5), branch cut, holonomy.",
     .example = "semquad field examples/half_disc.step --field-order 8 --svg field.svg",
     .opts = field_opts,

@@ -28,26 +28,21 @@ static const sq_cli_opt layout_opts[] = {
      .help = "the face split into its patches, as STEP (.step)", .target = SQ_CLI_AT(output)},
     SQ_CLI_OPT_FIELD_ORDER("8"),
     SQ_CLI_OPT_METHOD,
-    {.name = "size", .kind = SQ_CLI_REAL, .value = "H", .lo = 1e-300, .hi = 1e300,
-     .def = "sqrt(area)/3", .unit = "file unit", .help = "longest edge of the field's triangles",
-     .target = SQ_CLI_AT(opt.tri_size)},
+    SQ_CLI_OPT_FIELD_SIZE,
     SQ_CLI_OPT_MERGE_DISTANCE,
     SQ_CLI_OPT_SINGULARITIES,
     SQ_CLI_OPT_ALLOW_MISALIGNED,
     SQ_CLI_OPT_SVG("the layout: patches, separatrices, singular points, repairs"),
     SQ_CLI_OPT_REPORT,
-    SQ_CLI_OPT_FACE,
-    SQ_CLI_OPT_HEAL_TOLERANCE,
-    SQ_CLI_OPT_NO_HEAL,
-    SQ_CLI_OPT_QUIET,
+    SQ_CLI_OPTS_READING,
     SQ_CLI_OPT_ORDER_ALIAS,
     {0}};
 
 const sq_cli_command sq_cli_layout = {
     .name = "layout",
-    .summary = "Quad layout: separatrices traced from the singular points and corners\n"
-               "(Adams-Bashforth 4), merged, corrected until every patch is a quad; the face\n"
-               "split into the patches (STEP). Exit 6 if no valid layout can be made; the\n"
+    .summary = "Quad layout: separatrices traced from the singular points and corners "
+               "(Adams-Bashforth 4), merged, corrected until every patch is a quad; the face "
+               "split into the patches (STEP). Exit 6 if no valid layout can be made; the "
                "invalid layout is still drawn (--svg) and reported (--report).",
     .example = "semquad layout examples/half_disc.step -o patches.step --svg layout.svg",
     .opts = layout_opts,

@@ -71,7 +71,7 @@ static const sq_cli_opt mesh_opts[] = {
     {.name = "output", .short_name = 'o', .kind = SQ_CLI_OUTPUT, .value = "FILE",
      .def = "STEM.msh in the current directory",
      .help = "the mesh: Gmsh MSH 4.1 (.msh), Nektar++ XML (.xml) or VTU (.vtu); - for stdout",
-     .target = SQ_CLI_AT(output)},
+     .target = SQ_CLI_AT(output), .stdout_ok = 1},
     {.name = "format", .kind = SQ_CLI_WORD, .value = "msh|xml|vtu", .def = "-o's extension, else msh",
      .help = "the mesh's format, whatever the file's name", .target = SQ_CLI_AT(format)},
     {.name = "no-output", .kind = SQ_CLI_FLAG, .set = 1, .def = "off",
@@ -108,18 +108,15 @@ static const sq_cli_opt mesh_opts[] = {
      .target = SQ_CLI_AT(opt.road)},
     SQ_CLI_OPT_SVG("a picture of the mesh, coloured by quality"),
     SQ_CLI_OPT_REPORT,
-    SQ_CLI_OPT_FACE,
-    SQ_CLI_OPT_HEAL_TOLERANCE,
-    SQ_CLI_OPT_NO_HEAL,
-    SQ_CLI_OPT_QUIET,
+    SQ_CLI_OPTS_READING,
     {0}};
 
 const sq_cli_command sq_cli_mesh = {
     .name = "mesh",
-    .summary = "Block-structured high-order quad mesh of order Q: chords quantized, patches by\n"
-               "transfinite interpolation, relaxed to the minimum of Winslow's energy with the\n"
-               "boundary vertices sliding on the CAD curves. Quality summary on stdout,\n"
-               "progress on stderr. Where no valid layout is found, the split road meshes the\n"
+    .summary = "Block-structured high-order quad mesh of order Q: chords quantized, patches by "
+               "transfinite interpolation, relaxed to the minimum of Winslow's energy with the "
+               "boundary vertices sliding on the CAD curves. Quality summary on stdout, "
+               "progress on stderr. Where no valid layout is found, the split road meshes the "
                "face all the same, with a note (--road auto).",
     .example = "semquad mesh examples/half_disc.step --order 4 --size 0.1 -o half_disc.msh",
     .opts = mesh_opts,

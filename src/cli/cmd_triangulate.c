@@ -34,16 +34,13 @@ static const sq_cli_opt triangulate_opts[] = {
      .target = SQ_CLI_AT(opt.tri_max_turn_deg)},
     SQ_CLI_OPT_SVG("a picture of the triangles"),
     SQ_CLI_OPT_REPORT,
-    SQ_CLI_OPT_FACE,
-    SQ_CLI_OPT_HEAL_TOLERANCE,
-    SQ_CLI_OPT_NO_HEAL,
-    SQ_CLI_OPT_QUIET,
+    SQ_CLI_OPTS_READING,
     {0}};
 
 const sq_cli_command sq_cli_triangulate = {
     .name = "triangulate",
-    .summary = "Coarse curved triangulation of order P: CGAL constrained Delaunay refinement,\n"
-               "high-order boundary nodes exactly on the CAD curves, every element's scaled\n"
+    .summary = "Coarse curved triangulation of order P: CGAL constrained Delaunay refinement, "
+               "high-order boundary nodes exactly on the CAD curves, every element's scaled "
                "Jacobian checked positive.",
     .example = "semquad triangulate examples/half_disc.step --order 6 -o half_disc.vtu",
     .opts = triangulate_opts,
