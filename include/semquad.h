@@ -111,6 +111,15 @@ typedef enum {
  * sq_options.log_data.  NULL: silent. */
 typedef void (*sq_log_fn)(void *data, sq_log_level level, const char *line);
 
+/* Called as a stage that loops advances: `done` of `total` units of
+ * `stage`: "trace" (separatrices finished), "mesh" (layout patches
+ * filled), "relax" (Newton steps of the most allowed; a relaxation that
+ * converges stops short of total), "write" (0 of 1 when a mesh file is
+ * begun, 1 of 1 when it is complete).  A stage may run more than once (a
+ * retry, the second road).  `data` is sq_options.progress_data.  NULL:
+ * none. */
+typedef void (*sq_progress_fn)(void *data, const char *stage, long done, long total);
+
 /* ---- Options ----------------------------------------------------------- */
 
 typedef struct {
@@ -164,6 +173,8 @@ typedef struct {
     /* Messages */
     sq_log_fn log; /* NULL: silent (default) */
     void *log_data;
+    sq_progress_fn progress; /* NULL: no progress events (default) */
+    void *progress_data;
 } sq_options;
 
 /* Fill o with the defaults above.  Call before setting fields. */

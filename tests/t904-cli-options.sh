@@ -65,6 +65,7 @@ expect 2 "unknown option --ordr (did you mean --order?)" mesh "$ex/half_disc.ste
 expect 2 "unknown option --feild-order (did you mean --field-order?)" field "$ex/half_disc.step" --feild-order=3
 expect 2 "unknown option --bogus (try: semquad mesh --help)" mesh "$ex/half_disc.step" --bogus
 expect 2 "unknown option -x" triangulate "$ex/half_disc.step" -x
+expect 2 "option --bl- is ambiguous (--bl-first, --bl-ratio, ...)" mesh "$ex/half_disc.step" --bl- 2
 expect 2 "option --size needs a value" mesh "$ex/half_disc.step" --size
 expect 2 "option --no-output takes no value" mesh "$ex/half_disc.step" --no-output=1
 expect 2 "--size expects a number" mesh "$ex/half_disc.step" --size=abc
@@ -86,6 +87,19 @@ for c in field layout; do
     "$sq" $c "$ex/square.step" --order 3 -q >/dev/null 2>"$tmp/err"
     [ -s "$tmp/err" ] && fail "$c --order -q wrote to stderr: $(cat "$tmp/err")"
 done
+# progress: one JSON object per event with --progress=json (even with -q);
+# no bar where stderr is not a terminal
+"$sq" mesh "$ex/half_disc.step" --size 0.3 -q --progress=json -o "$tmp/p.msh" 2>"$tmp/err" >/dev/null ||
+    fail "--progress=json: $(cat "$tmp/err")"
+grep -vqE '^\{"stage": "(trace|mesh|relax|write)", "done": [0-9]+, "total": [0-9]+\}$' "$tmp/err" &&
+    fail "--progress=json: a line that is not a progress event: $(grep -vE '^\{"stage"' "$tmp/err" | head -3)"
+for s in trace mesh relax write; do grep -q "\"stage\": \"$s\"" "$tmp/err" || fail "--progress=json: no $s event"; done
+sed -E 's/.*"done": ([0-9]+), "total": ([0-9]+).*/\1 \2/' "$tmp/err" | awk '$1 > $2 {bad = 1} END {exit bad}' ||
+    fail "--progress=json: done above total"
+tail -1 "$tmp/err" | grep -qx '{"stage": "write", "done": 1, "total": 1}' || fail "--progress=json: the last event is not the write's end"
+"$sq" mesh "$ex/half_disc.step" --size 0.3 --no-output 2>"$tmp/err" >/dev/null
+grep -q "$(printf '\r')" "$tmp/err" && fail "a progress bar on a stderr that is not a terminal"
+expect 2 "--progress expects auto, json or none" mesh "$ex/half_disc.step" --progress=bar
 "$sq" --version | grep -qE '^semquad [0-9]+\.[0-9]+\.[0-9]+$' || fail "--version"
 
 # bash completion: generated from the same tables

@@ -3,7 +3,9 @@
  * directory or a device named as the mesh, the report or the layout's STEP
  * gives SQ_ERR_USAGE and is left as it was, with no temporary file beside
  * it; sq_output_check says the same before any work; sq_mesh_write_format
- * writes the format named whatever the file's name.  Public API only.
+ * writes the format named whatever the file's name; the progress callback
+ * hears every looping stage, done never above total, tracing and patch
+ * meshing to their end, writing begun and complete.  Public API only.
  * usage: t952-api-outputs EXAMPLES_DIR */
 #include <semquad.h>
 
@@ -15,6 +17,36 @@
 #include <unistd.h>
 
 static int fails;
+
+/* The progress events heard, per stage. */
+static const char *const STAGES[] = {"trace", "mesh", "relax", "write"};
+typedef struct {
+    int n[4];
+    long done[4], total[4];
+} heard;
+
+static void on_progress(void *data, const char *stage, long done, long total)
+{
+    heard *h = data;
+    for (int k = 0; k < 4; k++)
+        if (!strcmp(stage, STAGES[k])) {
+            h->n[k]++;
+            h->done[k] = done;
+            h->total[k] = total;
+            if (done >= 0 && done <= total) return;
+        }
+    printf("progress event %s %ld of %ld\n", stage, done, total);
+    fails++;
+}
+
+static void check_progress(const heard *h)
+{
+    for (int k = 0; k < 4; k++)
+        if (h->n[k] == 0) printf("no %s event\n", STAGES[k]), fails++;
+    for (int k = 0; k < 4; k++)
+        if (k != 2 && h->done[k] != h->total[k]) /* a relaxation may converge early */
+            printf("%s ended at %ld of %ld\n", STAGES[k], h->done[k], h->total[k]), fails++;
+}
 
 static void expect(const char *what, sq_status got, sq_status want, const sq_error *err)
 {
@@ -99,9 +131,13 @@ int main(int argc, char **argv)
     sq_options o;
     sq_options_init(&o);
     o.size = 0.3;
+    heard h = {0};
+    o.progress = on_progress;
+    o.progress_data = &h;
     expect("sq_model_open", sq_model_open(step, &o, &model, &err), SQ_OK, &err);
     if (model) expect("sq_face_mesh", sq_face_mesh(model, -1, &o, &mesh, &err), SQ_OK, &err);
     if (mesh) writers(dir, model, mesh);
+    check_progress(&h);
     sq_mesh_free(&mesh);
     sq_model_free(&model);
     rmdir(dir);

@@ -104,6 +104,7 @@ sq_status sq_api_layout_options(const sq_options *o, int for_mesh, sq_layout_opt
     if (o->field_order && for_mesh) lo->htheta.order = o->field_order;
     if (o->tri_size > 0.0) lo->field.tri.size = o->tri_size;
     if (o->merge_distance > 0.0) lo->trace.merge_distance = o->merge_distance;
+    lo->trace.progress = (sq_progress){o->progress, o->progress_data};
     lo->singularities = sq_api_singularities(o);
     lo->allow_misaligned = o->allow_misaligned;
     lo->field.tri.order = sq_tri_order_for(lo->field.order);
@@ -125,6 +126,7 @@ sq_status sq_api_mesher_options(const sq_options *o, sq_mesher_options *mo, sq_e
     else
         return SQ_FAIL(err, SQ_ERR_USAGE, "--nodes expects gll or equispaced, got '%s'", o->nodes);
     mo->max_quads = o->max_quads;
+    mo->progress = (sq_progress){o->progress, o->progress_data};
     mo->nbl = o->nbl;
     mo->bl_edges = o->bl_edges;
     mo->bl_first = o->bl_first;

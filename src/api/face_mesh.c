@@ -233,6 +233,7 @@ sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_
     }
     h->t0 = sq_now();
     h->t.read = model->t_read;
+    h->progress = mo.progress;
     sq_status st = sq_api_face_open(model, face, o, &h->face, err);
     char *healed = NULL;
     if (st == SQ_OK) st = sq_model_heal_summary(model, h->face.index, &healed, err);
@@ -332,7 +333,9 @@ sq_status sq_mesh_write_format(const sq_mesh *m, const char *path, const char *f
     if (!write)
         return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)", path);
     double t = sq_now();
+    sq_progress_report(&m->progress, "write", 0, 1);
     sq_status st = write(path, m->q, err);
+    if (st == SQ_OK) sq_progress_report(&m->progress, "write", 1, 1);
     *m->t_write += sq_now() - t;
     return st;
 }

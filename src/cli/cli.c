@@ -61,7 +61,7 @@ void sq_cli_args_init(sq_cli_args *a, const char *cmd)
 
 void sq_cli_log(void *data, sq_log_level level, const char *line)
 {
-    (void)data;
+    if (data) sq_cli_progress_clear(data);
     fprintf(stderr, "semquad: %s%s\n",
             level == SQ_LOG_NOTE ? "note: " : level == SQ_LOG_WARNING ? "warning: " : "", line);
 }

@@ -10,6 +10,15 @@
 
 #define SQ_CLI_MAX_LIST 64 /* entries of --bl and --sizes */
 
+/* What the progress bar shows (cli_progress.c). */
+typedef struct {
+    int json;      /* one JSON object per event instead of a bar */
+    char stage[16]; /* the stage under way */
+    double t0;     /* when it began */
+    long done;
+    int pct, shown; /* the bar on the terminal, if shown */
+} sq_cli_progress;
+
 /* What a command's options fill: the shared outputs and flags, and the
  * library's options. */
 typedef struct {
@@ -27,6 +36,8 @@ typedef struct {
     const char *csv;       /* converge --csv F */
     const char *format;    /* mesh --format msh|xml|vtu */
     const char *deprecated; /* the deprecated spelling used, warned about once */
+    const char *progress;  /* --progress auto|json|none */
+    sq_cli_progress bar;   /* its state (opt.progress_data and opt.log_data point here) */
     int bl[SQ_CLI_MAX_LIST];        /* mesh --bl (opt.bl_edges points here) */
     double sizes[SQ_CLI_MAX_LIST];  /* converge --sizes (opt.study_sizes points here) */
     sq_options opt;        /* the library's options; its logger prints to stderr unless -q */
@@ -91,6 +102,11 @@ typedef struct {
  * options, -q. */
 #define SQ_CLI_OPTS_READING                                                                        \
     SQ_CLI_OPT_FACE, SQ_CLI_OPT_HEAL_TOLERANCE, SQ_CLI_OPT_NO_HEAL, SQ_CLI_OPT_QUIET
+#define SQ_CLI_OPT_PROGRESS                                                                        \
+    {.name = "progress", .kind = SQ_CLI_WORD, .value = "auto|json|none", .def = "auto",            \
+     .help = "auto: a bar on stderr for a stage running past a second, where stderr is a "         \
+             "terminal (none with -q); json: one JSON object per event on stderr, even with -q",   \
+     .target = SQ_CLI_AT(progress)}
 #define SQ_CLI_OPT_SVG(what)                                                                       \
     {.name = "svg", .kind = SQ_CLI_OUTPUT, .value = "FILE", .def = "none", .help = (what),         \
      .target = SQ_CLI_AT(svg)}
@@ -172,8 +188,16 @@ sq_status sq_cli_double(const char *opt, const char *val, double lo, double hi, 
 sq_status sq_cli_int_list(const char *opt, const char *val, int lo, int hi, int *out, int max,
                           int *n, sq_error *err);
 
-/* Print a line of the library's messages on stderr ("semquad: note: ..."). */
+/* Print a line of the library's messages on stderr ("semquad: note: ..."),
+ * the progress bar (data, may be NULL) cleared first. */
 void sq_cli_log(void *data, sq_log_level level, const char *line);
+
+/* Progress (cli_progress.c): from --progress and -q, set opt.progress (a
+ * bar where stderr is a terminal, JSON lines, or none); the callback; and
+ * clearing the bar (before a line, at the end). */
+sq_status sq_cli_progress_init(sq_cli_args *a, sq_error *err);
+void sq_cli_progress_event(void *data, const char *stage, long done, long total);
+void sq_cli_progress_clear(sq_cli_progress *p);
 
 /* Check the options (a usage error before any work), then read a->input. */
 sq_status sq_cli_open(const sq_cli_args *a, sq_model **m, sq_error *err);

@@ -121,8 +121,10 @@ static void zsh_script(void)
            "    commands=(");
     for (const sq_cli_command *const *c = sq_cli_commands(); *c; c++) {
         printf("'%s:", (*c)->name);
-        char first[81];
-        snprintf(first, sizeof first, "%.*s", (int)strcspn((*c)->summary, ":\n"), (*c)->summary);
+        char first[81]; /* the summary's first words, up to a colon, a bracket or a stop */
+        int n = (int)strcspn((*c)->summary, ":(.");
+        while (n > 0 && (*c)->summary[n - 1] == ' ') n--;
+        snprintf(first, sizeof first, "%.*s", n, (*c)->summary);
         zsh_text(first);
         printf("' ");
     }

@@ -43,12 +43,17 @@ static sq_status unknown_option(const sq_cli_command *c, const char *arg, sq_err
     char name[64];
     const char *s = arg + strspn(arg, "-");
     snprintf(name, sizeof name, "%.*s", (int)strcspn(s, "="), s);
-    const sq_cli_opt *best = NULL;
-    int dbest = 1 << 20;
+    const sq_cli_opt *best = NULL, *prefix[2] = {NULL, NULL};
+    int dbest = 1 << 20, nprefix = 0;
     for (const sq_cli_opt *o = c->opts; o->name; o++) {
         int d = edit_distance(name, o->name);
         if (d < dbest) dbest = d, best = o;
+        if (*name && !strncmp(o->name, name, strlen(name)) && !o->alias_of && nprefix++ < 2)
+            prefix[nprefix - 1] = o;
     }
+    if (nprefix > 1) /* getopt_long takes a unique prefix only */
+        return SQ_FAIL(err, SQ_ERR_USAGE, "%s: option --%s is ambiguous (--%s, --%s%s)", c->name,
+                       name, prefix[0]->name, prefix[1]->name, nprefix > 2 ? ", ..." : "");
     int near = best && dbest <= 1 + (int)strlen(name) / 4 && dbest < (int)strlen(best->name);
     if (near) /* a deprecated spelling is answered with the current one */
         return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown option %.*s (did you mean --%s?)", c->name,
@@ -163,5 +168,6 @@ sq_status sq_cli_parse(const sq_cli_command *c, int argc, char **argv, sq_cli_ar
         fprintf(stderr, "semquad: warning: %s: --%s is deprecated, use --%s (it goes in the next "
                         "release)\n",
                 c->name, a->deprecated, sq_cli_find(c, a->deprecated)->alias_of);
+    SQ_TRY(sq_cli_progress_init(a, err));
     return check_outputs(c, a, err);
 }

@@ -34,6 +34,7 @@ static const sq_cli_opt layout_opts[] = {
     SQ_CLI_OPT_ALLOW_MISALIGNED,
     SQ_CLI_OPT_SVG("the layout: patches, separatrices, singular points, repairs"),
     SQ_CLI_OPT_REPORT,
+    SQ_CLI_OPT_PROGRESS,
     SQ_CLI_OPTS_READING,
     SQ_CLI_OPT_ORDER_ALIAS,
     {0}};

@@ -108,6 +108,7 @@ static const sq_cli_opt mesh_opts[] = {
      .target = SQ_CLI_AT(opt.road)},
     SQ_CLI_OPT_SVG("a picture of the mesh, coloured by quality"),
     SQ_CLI_OPT_REPORT,
+    SQ_CLI_OPT_PROGRESS,
     SQ_CLI_OPTS_READING,
     {0}};
 

@@ -32,7 +32,9 @@ static sq_status run_command(const sq_cli_command *c, int argc, char **argv, sq_
         sq_cli_usage(c);
         return SQ_OK;
     }
-    return c->run(&a, err);
+    sq_status st = c->run(&a, err);
+    sq_cli_progress_clear(&a.bar);
+    return st;
 }
 
 /* help, --version, completion; else a command. */
