@@ -2,7 +2,7 @@
 """Benchmarks of the layout pipeline's first stages (issues 4 and 5).
 
   field   time of the guiding-field solve + critical-point search + valences
-          (`semquad field FILE --order P`), per example and order P;
+          (`semquad field FILE --field-order P`), per example and order P;
           target: < 100 ms for half_disc at P = 8.
   layout  time of separatrix tracing + layout (graph, checks, repairs) + CAD
           split (`semquad layout FILE -o patches.step`) per example at P = 8;
@@ -79,7 +79,7 @@ def valences(rep):
 
 
 def bench_field(files, orders, runs, tmp, out):
-    print("### Field solve + critical points + valences (`semquad field FILE --order P`)\n")
+    print("### Field solve + critical points + valences (`semquad field FILE --field-order P`)\n")
     print("Median of %d runs, milliseconds. `field` = solve + critical_points "
           "(the critical-point search includes the valences and corner valences); "
           "read and triangulate are shown for P = 8 only.\n" % runs)
@@ -96,7 +96,7 @@ def bench_field(files, orders, runs, tmp, out):
             tot, solve, crit, prep = [], [], [], []
             err = None
             for _ in range(runs):
-                rc, rep = run_semquad(["field", f, "--order", str(p)],
+                rc, rep = run_semquad(["field", f, "--field-order", str(p)],
                                       os.path.join(tmp, "f.json"))
                 if rc:
                     err = "exit %d" % rc

@@ -111,6 +111,15 @@ typedef enum {
  * sq_options.log_data.  NULL: silent. */
 typedef void (*sq_log_fn)(void *data, sq_log_level level, const char *line);
 
+/* Called as a stage that loops advances: `done` of `total` units of
+ * `stage`: "trace" (separatrices finished), "mesh" (layout patches
+ * filled), "relax" (Newton steps of the most allowed; a relaxation that
+ * converges stops short of total), "write" (0 of 1 when a mesh file is
+ * begun, 1 of 1 when it is complete).  A stage may run more than once (a
+ * retry, the second road).  `data` is sq_options.progress_data.  NULL:
+ * none. */
+typedef void (*sq_progress_fn)(void *data, const char *stage, long done, long total);
+
 /* ---- Options ----------------------------------------------------------- */
 
 typedef struct {
@@ -164,6 +173,8 @@ typedef struct {
     /* Messages */
     sq_log_fn log; /* NULL: silent (default) */
     void *log_data;
+    sq_progress_fn progress; /* NULL: no progress events (default) */
+    void *progress_data;
 } sq_options;
 
 /* Fill o with the defaults above.  Call before setting fields. */
@@ -173,6 +184,17 @@ SQ_API void sq_options_init(sq_options *o);
  * of range, boundary layers without thickness...): every stage checks its
  * options, this checks them all before any work. */
 SQ_API sq_status sq_options_check(const sq_options *o, sq_error *err);
+
+/* ---- Output files -------------------------------------------------------
+ * Every writer (sq_*_write, sq_*_write_report) writes a regular file, all
+ * or nothing (a temporary file beside it, renamed when complete), or, for
+ * the path "-", standard output (text formats; not STEP).  A path naming a
+ * directory, a FIFO, a device or a socket is refused with SQ_ERR_USAGE
+ * before anything is written: a rename would replace it with a file. */
+
+/* SQ_ERR_USAGE if path names something other than a regular file, a new
+ * file or "-" (check every output before the work that makes it). */
+SQ_API sq_status sq_output_check(const char *path, sq_error *err);
 
 /* ---- A CAD model -------------------------------------------------------- */
 
@@ -324,6 +346,10 @@ SQ_API sq_status sq_mesh_describe(const sq_mesh *m, char **text, sq_error *err);
  * .xml (Nektar++), .vtu (VTK), .svg (a picture).  Nothing is left at path
  * on failure. */
 SQ_API sq_status sq_mesh_write(const sq_mesh *m, const char *path, sq_error *err);
+/* The same in the format named ("msh", "xml", "vtu" or "svg"; NULL: by
+ * the extension), whatever path's name; path "-" is standard output. */
+SQ_API sq_status sq_mesh_write_format(const sq_mesh *m, const char *path, const char *format,
+                                      sq_error *err);
 /* 1 if sq_mesh_write knows path's format, else 0 (check before meshing). */
 SQ_API int sq_mesh_format_known(const char *path);
 

@@ -84,7 +84,7 @@ grep -q '"quads": *75,' "$tmp/tg.json" || fail "triangle guiding mesh: not 75 qu
 
 # a degenerate critical point (the disc's index-4 centre) is split into four
 # valence-3 points, said on stderr, and meshed on their H/theta field
-"$sq" mesh "$ex/disc.step" --report "$tmp/d.json" >/dev/null 2>"$tmp/err"
+"$sq" mesh "$ex/disc.step" --no-output --report "$tmp/d.json" >/dev/null 2>"$tmp/err"
 [ $? -eq 0 ] || fail "disc mesh: exit status not 0: $(cat "$tmp/err")"
 grep -q "1 degenerate singular point .* split into 4 elementary points" "$tmp/err" ||
     fail "disc mesh: no note on the split: $(cat "$tmp/err")"

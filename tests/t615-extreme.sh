@@ -67,6 +67,7 @@ expect() { # name status timeout command...
     [ "$got" -eq "$want" ] || fail "$name: exit $got, expected $want: $(head -c 300 "$tmp/err")"
     [ "$want" -eq 0 ] || [ "$(wc -l <"$tmp/err")" -eq 1 ] ||
         fail "$name: not one line on stderr: $(cat "$tmp/err")"
+    ! grep -qE '^semquad: ([^:]+): \1[:;]' "$tmp/err" || fail "$name: the error repeats its prefix: $(cat "$tmp/err")"
 }
 
 # the sanitized build (.ci/run, ASAN_OPTIONS set) runs several times slower

@@ -21,6 +21,9 @@ expect() {
     if [ "$want" -ne 0 ] && [ "$lines" -ne 1 ]; then
         echo "$what: $lines stderr lines, expected 1:"; cat "$tmp/err"; fails=$((fails + 1))
     fi
+    if grep -qE '^semquad: ([^:]+): \1[:;]' "$tmp/err"; then # said once, at the source
+        echo "$what: the error repeats its prefix: $(cat "$tmp/err")"; fails=$((fails + 1))
+    fi
     if [ "$want" -ne 0 ] && ls "$tmp"/o.* >/dev/null 2>&1; then
         echo "$what: left an output file: $(ls "$tmp"/o.*)"; fails=$((fails + 1))
     fi

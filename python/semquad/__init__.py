@@ -38,6 +38,8 @@ class _Error(ctypes.Structure):
 
 
 _LOG_FN = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_int, ctypes.c_char_p)
+_PROGRESS_FN = ctypes.CFUNCTYPE(None, ctypes.c_void_p, ctypes.c_char_p, ctypes.c_long,
+                                ctypes.c_long)
 
 
 class _Options(ctypes.Structure):
@@ -58,7 +60,8 @@ class _Options(ctypes.Structure):
         ("study_pmin", ctypes.c_int), ("study_pmax", ctypes.c_int),
         ("study_nsizes", ctypes.c_int), ("study_sizes", ctypes.POINTER(ctypes.c_double)),
         ("study_geom_order", ctypes.c_int),
-        ("log", _LOG_FN), ("log_data", ctypes.c_void_p)]
+        ("log", _LOG_FN), ("log_data", ctypes.c_void_p),
+        ("progress", _PROGRESS_FN), ("progress_data", ctypes.c_void_p)]
 
 
 def _find_library():

@@ -2,6 +2,7 @@
  * helpers of api_private.h. */
 #include "api_private.h"
 #include "converge.h"
+#include "outfile.h"
 
 #include <stdarg.h>
 #include <stdio.h>
@@ -86,8 +87,7 @@ sq_status sq_api_field_options(const sq_options *o, sq_field_options *fo, sq_err
     if (o->field_order) fo->order = o->field_order;
     if (o->tri_size > 0.0) fo->tri.size = o->tri_size;
     if (!o->field_grading) fo->grading = 0.0; /* uniform near singular vertices */
-    /* isoparametric unless told otherwise (the triangulation stops at 12) */
-    fo->tri.order = o->tri_order ? o->tri_order : (fo->order < 12 ? fo->order : 12);
+    fo->tri.order = o->tri_order ? o->tri_order : sq_tri_order_for(fo->order);
     return SQ_OK;
 }
 
@@ -104,10 +104,11 @@ sq_status sq_api_layout_options(const sq_options *o, int for_mesh, sq_layout_opt
     if (o->field_order && for_mesh) lo->htheta.order = o->field_order;
     if (o->tri_size > 0.0) lo->field.tri.size = o->tri_size;
     if (o->merge_distance > 0.0) lo->trace.merge_distance = o->merge_distance;
+    lo->trace.progress = (sq_progress){o->progress, o->progress_data};
     lo->singularities = sq_api_singularities(o);
     lo->allow_misaligned = o->allow_misaligned;
-    lo->field.tri.order = lo->field.order < 12 ? lo->field.order : 12;
-    if (for_mesh) lo->htheta.tri.order = lo->htheta.order < 12 ? lo->htheta.order : 12;
+    lo->field.tri.order = sq_tri_order_for(lo->field.order);
+    if (for_mesh) lo->htheta.tri.order = sq_tri_order_for(lo->htheta.order);
     return SQ_OK;
 }
 
@@ -125,6 +126,7 @@ sq_status sq_api_mesher_options(const sq_options *o, sq_mesher_options *mo, sq_e
     else
         return SQ_FAIL(err, SQ_ERR_USAGE, "--nodes expects gll or equispaced, got '%s'", o->nodes);
     mo->max_quads = o->max_quads;
+    mo->progress = (sq_progress){o->progress, o->progress_data};
     mo->nbl = o->nbl;
     mo->bl_edges = o->bl_edges;
     mo->bl_first = o->bl_first;
@@ -173,6 +175,12 @@ sq_status sq_api_parse_road(const char *val, sq_api_road *road, sq_error *err)
     else
         return SQ_FAIL(err, SQ_ERR_USAGE, "--road expects auto, layout or split, got '%s'", val);
     return SQ_OK;
+}
+
+sq_status sq_output_check(const char *path, sq_error *err)
+{
+    if (!path) return SQ_FAIL(err, SQ_ERR_USAGE, "no output file named");
+    return sq_outfile_check(path, err);
 }
 
 sq_status sq_options_check(const sq_options *o, sq_error *err)

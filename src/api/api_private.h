@@ -56,6 +56,7 @@ struct sq_mesh {
     sq_mesh_timings t;
     double t0;            /* sq_now() when meshing began, for timings.total */
     double *t_write;      /* seconds in sq_mesh_write so far (apart, as t_split) */
+    sq_progress progress; /* the caller's, for the "write" events */
     double *xyz, *sjac, *eta;
     int *bnd;
     double origin[3], xdir[3], ydir[3];

@@ -233,6 +233,7 @@ sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_
     }
     h->t0 = sq_now();
     h->t.read = model->t_read;
+    h->progress = mo.progress;
     sq_status st = sq_api_face_open(model, face, o, &h->face, err);
     char *healed = NULL;
     if (st == SQ_OK) st = sq_model_heal_summary(model, h->face.index, &healed, err);
@@ -304,22 +305,37 @@ static const struct {
                     {".vtu", sq_write_quad_vtu},
                     {".svg", sq_write_quad_svg}};
 
-static mesh_writer writer_of(const char *path)
+/* The writer of format ("msh", "xml", ...), or of path's extension when
+ * format is NULL. */
+static mesh_writer writer_of(const char *path, const char *format)
 {
-    for (size_t k = 0; k < sizeof mesh_formats / sizeof *mesh_formats; k++)
-        if (sq_api_ends_with(path, mesh_formats[k].ext)) return mesh_formats[k].write;
+    for (size_t k = 0; k < sizeof mesh_formats / sizeof *mesh_formats; k++) {
+        const char *ext = mesh_formats[k].ext;
+        if (format ? !strcmp(format, ext + 1) : sq_api_ends_with(path, ext))
+            return mesh_formats[k].write;
+    }
     return NULL;
 }
 
-int sq_mesh_format_known(const char *path) { return writer_of(path) != NULL; }
+int sq_mesh_format_known(const char *path) { return writer_of(path, NULL) != NULL; }
 
 sq_status sq_mesh_write(const sq_mesh *m, const char *path, sq_error *err)
 {
-    mesh_writer write = writer_of(path);
+    return sq_mesh_write_format(m, path, NULL, err);
+}
+
+sq_status sq_mesh_write_format(const sq_mesh *m, const char *path, const char *format,
+                               sq_error *err)
+{
+    mesh_writer write = writer_of(path, format);
+    if (!write && format)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "unknown mesh format '%s' (use msh, xml or vtu)", format);
     if (!write)
         return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)", path);
     double t = sq_now();
+    sq_progress_report(&m->progress, "write", 0, 1);
     sq_status st = write(path, m->q, err);
+    if (st == SQ_OK) sq_progress_report(&m->progress, "write", 1, 1);
     *m->t_write += sq_now() - t;
     return st;
 }

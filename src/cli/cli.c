@@ -50,69 +50,18 @@ sq_status sq_cli_int_list(const char *opt, const char *val, int lo, int hi, int 
     return SQ_OK;
 }
 
-sq_status sq_cli_value(int argc, char **argv, int *i, const char **val, sq_error *err)
-{
-    if (*i + 1 >= argc) return SQ_FAIL(err, SQ_ERR_USAGE, "option %s needs a value", argv[*i]);
-    *val = argv[++*i];
-    return SQ_OK;
-}
-
-void sq_cli_args_init(sq_cli_args *a)
+void sq_cli_args_init(sq_cli_args *a, const char *cmd)
 {
     memset(a, 0, sizeof *a);
+    a->cmd = cmd;
     a->face = -1;
     sq_options_init(&a->opt);
     a->opt.log = sq_cli_log;
 }
 
-sq_status sq_cli_take(const char *cmd, int argc, char **argv, int *i, sq_cli_args *a, int *taken,
-                      sq_error *err)
-{
-    const char *o = argv[*i], *val = NULL;
-    *taken = 1;
-    if (!strcmp(o, "--face")) {
-        SQ_TRY(sq_cli_value(argc, argv, i, &val, err));
-        return sq_cli_int(o, val, 0, 1000000, &a->face, err);
-    }
-    if (!strcmp(o, "-o") || !strcmp(o, "--output"))
-        return sq_cli_value(argc, argv, i, &a->output, err);
-    if (!strcmp(o, "--svg")) return sq_cli_value(argc, argv, i, &a->svg, err);
-    if (!strcmp(o, "--no-heal")) {
-        a->opt.heal = 0;
-        return SQ_OK;
-    }
-    if (!strcmp(o, "--heal-tolerance")) {
-        SQ_TRY(sq_cli_value(argc, argv, i, &val, err));
-        return sq_cli_double(o, val, 1e-300, 1e300, &a->opt.heal_tolerance, err);
-    }
-    if (!strcmp(o, "--report")) return sq_cli_value(argc, argv, i, &a->report, err);
-    if (!strcmp(o, "-q") || !strcmp(o, "--quiet")) {
-        a->quiet = 1;
-        a->opt.log = NULL;
-        return SQ_OK;
-    }
-    if (o[0] != '-' || !o[1]) {
-        if (a->input) return SQ_FAIL(err, SQ_ERR_USAGE, "%s: one input file expected", cmd);
-        a->input = o;
-        return SQ_OK;
-    }
-    *taken = 0;
-    return SQ_OK;
-}
-
-sq_status sq_cli_unknown(const char *cmd, const char *opt, sq_error *err)
-{
-    return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown option %s (try: semquad help)", cmd, opt);
-}
-
-sq_status sq_cli_need_input(const char *cmd, const sq_cli_args *a, sq_error *err)
-{
-    return a->input ? SQ_OK : SQ_FAIL(err, SQ_ERR_USAGE, "%s: missing input file", cmd);
-}
-
 void sq_cli_log(void *data, sq_log_level level, const char *line)
 {
-    (void)data;
+    if (data) sq_cli_progress_clear(data);
     fprintf(stderr, "semquad: %s%s\n",
             level == SQ_LOG_NOTE ? "note: " : level == SQ_LOG_WARNING ? "warning: " : "", line);
 }
@@ -123,9 +72,9 @@ sq_status sq_cli_open(const sq_cli_args *a, sq_model **m, sq_error *err)
     return sq_model_open(a->input, &a->opt, m, err);
 }
 
-sq_status sq_cli_print(sq_status st, char **text)
+sq_status sq_cli_print(sq_status st, char **text, const sq_cli_args *a)
 {
-    if (*text) fputs(*text, stdout);
+    if (*text) fputs(*text, a->to_stdout ? stderr : stdout);
     sq_free(*text);
     *text = NULL;
     return st;

@@ -1,56 +1,53 @@
-/* semquad field FILE [--face N] [--order P] [--method auto|cg|dg] [--size H]
- *   [--singularities FILE|natural] [--allow-misaligned]
- *   [--report out.json] [--vtu out.vtu] [--svg out.svg] [--quiet] */
+/* semquad field FILE: the guiding field or the H/theta field of a pattern,
+ * its singular points (sq_face_field). */
 #include "cli.h"
 
-#include <stdio.h>
-#include <string.h>
-
-sq_status sq_cmd_field(int argc, char **argv, sq_error *err)
+static sq_status run_field(sq_cli_args *a, sq_error *err)
 {
-    const char *val;
-    sq_cli_args args;
-    sq_cli_args_init(&args);
-    sq_options *o = &args.opt;
-    for (int i = 0; i < argc; i++) {
-        const char *a = argv[i];
-        int taken;
-        SQ_TRY(sq_cli_take("field", argc, argv, &i, &args, &taken, err));
-        if (taken) continue;
-        if (!strcmp(a, "--order")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            SQ_TRY(sq_cli_int(a, val, 1, 16, &o->field_order, err));
-        } else if (!strcmp(a, "--geom-order")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            SQ_TRY(sq_cli_int(a, val, 1, 12, &o->tri_order, err));
-        } else if (!strcmp(a, "--method")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &o->method, err));
-        } else if (!strcmp(a, "--size")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            SQ_TRY(sq_cli_double(a, val, 1e-300, 1e300, &o->tri_size, err));
-        } else if (!strcmp(a, "--vtu")) { /* alias of -o */
-            SQ_TRY(sq_cli_value(argc, argv, &i, &args.output, err));
-        } else if (!strcmp(a, "--singularities")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &o->singularities, err));
-        } else if (!strcmp(a, "--no-grading")) {
-            o->field_grading = 0; /* uniform triangulation near singular vertices */
-        } else if (!strcmp(a, "--allow-misaligned")) {
-            o->allow_misaligned = 1;
-        } else {
-            return sq_cli_unknown("field", a, err);
-        }
-    }
-    SQ_TRY(sq_cli_need_input("field", &args, err));
     sq_model *m = NULL;
-    SQ_TRY(sq_cli_open(&args, &m, err));
+    SQ_TRY(sq_cli_open(a, &m, err));
     sq_field *f = NULL;
-    sq_status st = sq_face_field(m, args.face, o, &f, err);
-    if (st == SQ_OK && args.output) st = sq_field_write(f, args.output, err);
-    if (st == SQ_OK && args.svg) st = sq_field_write(f, args.svg, err);
-    if (st == SQ_OK && args.report) st = sq_field_write_report(f, args.report, err);
+    sq_status st = sq_face_field(m, a->face, &a->opt, &f, err);
+    if (st == SQ_OK && a->output) st = sq_field_write(f, a->output, err);
+    if (st == SQ_OK && a->svg) st = sq_field_write(f, a->svg, err);
+    if (st == SQ_OK && a->report) st = sq_field_write_report(f, a->report, err);
     char *text = NULL;
-    if (st == SQ_OK && !args.quiet) st = sq_cli_print(sq_field_describe(f, &text, err), &text);
+    if (st == SQ_OK && !a->quiet) st = sq_cli_print(sq_field_describe(f, &text, err), &text, a);
     sq_field_free(&f);
     sq_model_free(&m);
     return st;
 }
+
+static const sq_cli_opt field_opts[] = {
+    {.name = "output", .short_name = 'o', .kind = SQ_CLI_OUTPUT, .value = "FILE", .def = "none",
+     .help = "the field as VTU (.vtu: u, v, psi; H, theta with --singularities) or SVG",
+     .target = SQ_CLI_AT(output)},
+    {.name = "vtu", .kind = SQ_CLI_OUTPUT, .value = "FILE", .def = "none",
+     .help = "the same as -o", .target = SQ_CLI_AT(output)},
+    SQ_CLI_OPT_FIELD_ORDER("8"),
+    SQ_CLI_OPT_METHOD,
+    SQ_CLI_OPT_FIELD_SIZE,
+    {.name = "geom-order", .kind = SQ_CLI_INT, .value = "G", .lo = 1, .hi = 12,
+     .def = "the field's order, at most 12", .help = "order of the curved triangles (1..12)",
+     .target = SQ_CLI_AT(opt.tri_order)},
+    SQ_CLI_OPT_SINGULARITIES,
+    SQ_CLI_OPT_ALLOW_MISALIGNED,
+    {.name = "no-grading", .kind = SQ_CLI_FLAG, .set = 0, .def = "graded",
+     .help = "no hp grading of the triangulation towards singular corners",
+     .target = SQ_CLI_AT(opt.field_grading)},
+    SQ_CLI_OPT_SVG("crosses, zero contours and singular points"),
+    SQ_CLI_OPT_REPORT,
+    SQ_CLI_OPTS_READING,
+    SQ_CLI_OPT_ORDER_ALIAS,
+    {0}};
+
+const sq_cli_command sq_cli_field = {
+    .name = "field",
+    .summary = "The guiding field (u,v) = (cos 4t, sin 4t) of Marcon et al. 2019, its critical "
+               "points with valences, the corner valences, the Poincare-Hopf check. With "
+               "--singularities, the H and theta fields of an imposed pattern (FILE: lines "
+               "'x y valence' and 'corner x y quads'; natural: the guiding field's points): "
+               "Gauss-Bonnet check (exit 5), branch cut, holonomy.",
+    .example = "semquad field examples/half_disc.step --field-order 8 --svg field.svg",
+    .opts = field_opts,
+    .run = run_field};

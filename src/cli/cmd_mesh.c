@@ -1,85 +1,124 @@
-/* semquad mesh FILE [--face N] [--order Q] [--size h] [--field-order P]
- *   [--method auto|cg|dg] [--merge-distance K] [--nodes gll|equispaced]
- *   [--bl E1,E2,... --bl-first d --bl-ratio r --bl-layers n] [--max-quads N]
- *   [--road auto|layout|split] [-o out.msh|.xml|.vtu] [--svg F] [--report F] [-q] */
+/* semquad mesh FILE: the block-structured high-order quad mesh of a face
+ * (sq_face_mesh), written where -o says, else beside the current
+ * directory's other files as <input stem>.msh. */
 #include "cli.h"
 
 #include <stdio.h>
 #include <string.h>
 
-/* Options of mesh alone; SQ_ERR_USAGE for one no command takes. */
-static sq_status mesh_option(int argc, char **argv, int *i, sq_options *o, int *bl, int maxbl,
-                             sq_error *err)
+static sq_status parse_bl(const char *opt, const char *val, sq_cli_args *a, sq_error *err)
 {
-    const char *a = argv[*i], *val;
-    if (!strcmp(a, "--allow-misaligned")) {
-        o->allow_misaligned = 1;
-        return SQ_OK;
-    }
-    if (strcmp(a, "--order") && strcmp(a, "--size") && strcmp(a, "--field-order") &&
-        strcmp(a, "--method") && strcmp(a, "--singularities") && strcmp(a, "--merge-distance") &&
-        strcmp(a, "--bl") && strcmp(a, "--bl-first") && strcmp(a, "--bl-ratio") &&
-        strcmp(a, "--bl-layers") && strcmp(a, "--max-quads") && strcmp(a, "--road") &&
-        strcmp(a, "--nodes"))
-        return sq_cli_unknown("mesh", a, err);
-    SQ_TRY(sq_cli_value(argc, argv, i, &val, err));
-    if (!strcmp(a, "--order")) return sq_cli_int(a, val, 1, 10, &o->order, err);
-    if (!strcmp(a, "--size")) return sq_cli_double(a, val, 1e-300, 1e300, &o->size, err);
-    if (!strcmp(a, "--field-order")) return sq_cli_int(a, val, 1, 16, &o->field_order, err);
-    if (!strcmp(a, "--merge-distance"))
-        return sq_cli_double(a, val, 0.1, 1000.0, &o->merge_distance, err);
-    if (!strcmp(a, "--bl")) {
-        o->bl_edges = bl;
-        return sq_cli_int_list(a, val, 0, 1000000, bl, maxbl, &o->nbl, err);
-    }
-    if (!strcmp(a, "--bl-first")) return sq_cli_double(a, val, 1e-300, 1e300, &o->bl_first, err);
-    if (!strcmp(a, "--bl-ratio")) return sq_cli_double(a, val, 1.0, 10.0, &o->bl_ratio, err);
-    if (!strcmp(a, "--bl-layers")) return sq_cli_int(a, val, 1, 1000, &o->bl_layers, err);
-    if (!strcmp(a, "--max-quads")) return sq_cli_double(a, val, 1.0, 1e15, &o->max_quads, err);
-    if (!strcmp(a, "--method"))
-        o->method = val;
-    else if (!strcmp(a, "--singularities"))
-        o->singularities = val;
-    else if (!strcmp(a, "--road"))
-        o->road = val;
-    else
-        o->nodes = val;
-    return SQ_OK;
+    a->opt.bl_edges = a->bl;
+    return sq_cli_int_list(opt, val, 0, 1000000, a->bl, SQ_CLI_MAX_LIST, &a->opt.nbl, err);
+}
+
+/* The mesh file: -o, else <input stem>.<format> in the current directory
+ * (name[n] holds it), none with --no-output; its format --format, else
+ * -o's extension.  Checked before any work. */
+static sq_status mesh_file(sq_cli_args *a, char *name, size_t n, sq_error *err)
+{
+    if (a->no_output && a->output)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "mesh: -o and --no-output exclude each other");
+    char probe[32];
+    snprintf(probe, sizeof probe, "mesh.%.20s", a->format ? a->format : "");
+    if (a->format && !sq_mesh_format_known(probe))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--format expects msh, xml or vtu, got '%s'", a->format);
+    if (a->output && !a->format && strcmp(a->output, "-") && !sq_mesh_format_known(a->output))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)",
+                       a->output);
+    if (a->output && !strcmp(a->output, "-") && !a->format) a->format = "msh";
+    if (a->no_output || a->output) return SQ_OK;
+    const char *base = strrchr(a->input, '/') ? strrchr(a->input, '/') + 1 : a->input;
+    const char *dot = strrchr(base, '.');
+    int stem = dot && dot != base ? (int)(dot - base) : (int)strlen(base);
+    if (snprintf(name, n, "%.*s.%s", stem, base, a->format ? a->format : "msh") >= (int)n)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "%s: file name too long", a->input);
+    a->output = name;
+    return sq_output_check(name, err);
 }
 
 /* The outputs -o, --svg and --report, in that order (the report's
  * timings include the writes). */
-static sq_status write_outputs(const sq_mesh *mesh, const sq_cli_args *args, sq_error *err)
+static sq_status write_outputs(const sq_mesh *mesh, const sq_cli_args *a, int named,
+                               sq_error *err)
 {
-    if (args->output) SQ_TRY(sq_mesh_write(mesh, args->output, err));
-    if (args->svg) SQ_TRY(sq_mesh_write(mesh, args->svg, err));
-    if (args->report) SQ_TRY(sq_mesh_write_report(mesh, args->report, err));
+    if (a->output) SQ_TRY(sq_mesh_write_format(mesh, a->output, a->format, err));
+    if (a->output && !named && !a->quiet)
+        fprintf(stderr, "semquad: note: no -o given: wrote %s\n", a->output);
+    if (a->svg) SQ_TRY(sq_mesh_write(mesh, a->svg, err));
+    if (a->report) SQ_TRY(sq_mesh_write_report(mesh, a->report, err));
     return SQ_OK;
 }
 
-sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
+static sq_status run_mesh(sq_cli_args *a, sq_error *err)
 {
-    int bl[64];
-    sq_cli_args args;
-    sq_cli_args_init(&args);
-    for (int i = 0; i < argc; i++) {
-        int taken;
-        SQ_TRY(sq_cli_take("mesh", argc, argv, &i, &args, &taken, err));
-        if (!taken)
-            SQ_TRY(mesh_option(argc, argv, &i, &args.opt, bl, (int)(sizeof bl / sizeof *bl), err));
-    }
-    SQ_TRY(sq_cli_need_input("mesh", &args, err));
-    if (args.output && !sq_mesh_format_known(args.output))
-        return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)",
-                       args.output);
+    char name[4096];
+    int named = a->output != NULL;
+    SQ_TRY(mesh_file(a, name, sizeof name, err));
     sq_model *m = NULL;
-    SQ_TRY(sq_cli_open(&args, &m, err));
+    SQ_TRY(sq_cli_open(a, &m, err));
     sq_mesh *mesh = NULL;
-    sq_status st = sq_face_mesh(m, args.face, &args.opt, &mesh, err);
-    if (st == SQ_OK) st = write_outputs(mesh, &args, err);
+    sq_status st = sq_face_mesh(m, a->face, &a->opt, &mesh, err);
+    if (st == SQ_OK) st = write_outputs(mesh, a, named, err);
     char *text = NULL;
-    if (st == SQ_OK && !args.quiet) st = sq_cli_print(sq_mesh_describe(mesh, &text, err), &text);
+    if (st == SQ_OK && !a->quiet) st = sq_cli_print(sq_mesh_describe(mesh, &text, err), &text, a);
     sq_mesh_free(&mesh);
     sq_model_free(&m);
     return st;
 }
+
+static const sq_cli_opt mesh_opts[] = {
+    {.name = "output", .short_name = 'o', .kind = SQ_CLI_OUTPUT, .value = "FILE",
+     .def = "STEM.msh in the current directory",
+     .help = "the mesh: Gmsh MSH 4.1 (.msh), Nektar++ XML (.xml) or VTU (.vtu); - for stdout",
+     .target = SQ_CLI_AT(output), .stdout_ok = 1},
+    {.name = "format", .kind = SQ_CLI_WORD, .value = "msh|xml|vtu", .def = "-o's extension, else msh",
+     .help = "the mesh's format, whatever the file's name", .target = SQ_CLI_AT(format)},
+    {.name = "no-output", .kind = SQ_CLI_FLAG, .set = 1, .def = "off",
+     .help = "mesh and report, but write no mesh file", .target = SQ_CLI_AT(no_output)},
+    {.name = "order", .kind = SQ_CLI_INT, .value = "Q", .lo = 1, .hi = 10, .def = "4",
+     .help = "element order of the quads (1..10)", .target = SQ_CLI_AT(opt.order)},
+    {.name = "size", .kind = SQ_CLI_REAL, .value = "H", .lo = 1e-300, .hi = 1e300,
+     .def = "sqrt(area)/8, halved up to 3 times while quads fold", .unit = "file unit",
+     .help = "target quad size", .target = SQ_CLI_AT(opt.size)},
+    SQ_CLI_OPT_FIELD_ORDER("4 (guiding field), 8 (H/theta field)"),
+    SQ_CLI_OPT_METHOD,
+    SQ_CLI_OPT_MERGE_DISTANCE,
+    SQ_CLI_OPT_SINGULARITIES,
+    SQ_CLI_OPT_ALLOW_MISALIGNED,
+    {.name = "nodes", .kind = SQ_CLI_WORD, .value = "gll|equispaced", .def = "gll",
+     .help = "nodes along the sides: Gauss-Lobatto-Legendre or equispaced",
+     .target = SQ_CLI_AT(opt.nodes)},
+    {.name = "bl", .kind = SQ_CLI_CUSTOM, .value = "E1,E2,...", .def = "none",
+     .help = "boundary layers on these CAD edges (as semquad info numbers them)", .parse = parse_bl},
+    {.name = "bl-first", .kind = SQ_CLI_REAL, .value = "D", .lo = 1e-300, .hi = 1e300,
+     .def = "none (needed by --bl)", .unit = "file unit", .help = "first layer's height",
+     .target = SQ_CLI_AT(opt.bl_first)},
+    {.name = "bl-ratio", .kind = SQ_CLI_REAL, .value = "R", .lo = 1.0, .hi = 10.0, .def = "1.2",
+     .help = "growth ratio of the layers (1..10)", .target = SQ_CLI_AT(opt.bl_ratio)},
+    {.name = "bl-layers", .kind = SQ_CLI_INT, .value = "N", .lo = 1, .hi = 1000,
+     .def = "none (needed by --bl)", .help = "number of layers (1..1000)",
+     .target = SQ_CLI_AT(opt.bl_layers)},
+    {.name = "max-quads", .kind = SQ_CLI_REAL, .value = "N", .lo = 1.0, .hi = 1e15, .def = "2e7",
+     .help = "refuse, before meshing, a size giving more quads (and name one that fits)",
+     .target = SQ_CLI_AT(opt.max_quads)},
+    {.name = "road", .kind = SQ_CLI_WORD, .value = "auto|layout|split", .def = "auto",
+     .help = "layout: field, layout, patches; split: triangles split into quads; auto: layout, "
+             "else split",
+     .target = SQ_CLI_AT(opt.road)},
+    SQ_CLI_OPT_SVG("a picture of the mesh, coloured by quality"),
+    SQ_CLI_OPT_REPORT,
+    SQ_CLI_OPT_PROGRESS,
+    SQ_CLI_OPTS_READING,
+    {0}};
+
+const sq_cli_command sq_cli_mesh = {
+    .name = "mesh",
+    .summary = "Block-structured high-order quad mesh of order Q: chords quantized, patches by "
+               "transfinite interpolation, relaxed to the minimum of Winslow's energy with the "
+               "boundary vertices sliding on the CAD curves. Quality summary on stdout, "
+               "progress on stderr. Where no valid layout is found, the split road meshes the "
+               "face all the same, with a note (--road auto).",
+    .example = "semquad mesh examples/half_disc.step --order 4 --size 0.1 -o half_disc.msh",
+    .opts = mesh_opts,
+    .run = run_mesh};

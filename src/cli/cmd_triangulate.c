@@ -1,48 +1,47 @@
-/* semquad triangulate FILE [--face N] [--order P] [--size H] [--min-angle A]
- *   [--max-turn T] [-o out.vtu] [--svg out.svg] [--report out.json] */
+/* semquad triangulate FILE: the coarse curved triangulation of a face
+ * (sq_face_triangulate). */
 #include "cli.h"
 
-#include <stdio.h>
-#include <string.h>
-
-sq_status sq_cmd_triangulate(int argc, char **argv, sq_error *err)
+static sq_status run_triangulate(sq_cli_args *a, sq_error *err)
 {
-    const char *val;
-    sq_cli_args args;
-    sq_cli_args_init(&args);
-    sq_options *o = &args.opt;
-    for (int i = 0; i < argc; i++) {
-        const char *a = argv[i];
-        int taken;
-        SQ_TRY(sq_cli_take("triangulate", argc, argv, &i, &args, &taken, err));
-        if (taken) continue;
-        if (!strcmp(a, "--order")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            SQ_TRY(sq_cli_int(a, val, 1, 12, &o->tri_order, err));
-        } else if (!strcmp(a, "--size")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            SQ_TRY(sq_cli_double(a, val, 1e-300, 1e300, &o->tri_size, err));
-        } else if (!strcmp(a, "--min-angle")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            SQ_TRY(sq_cli_double(a, val, 1.0, 30.0, &o->tri_min_angle_deg, err));
-        } else if (!strcmp(a, "--max-turn")) {
-            SQ_TRY(sq_cli_value(argc, argv, &i, &val, err));
-            SQ_TRY(sq_cli_double(a, val, 1.0, 90.0, &o->tri_max_turn_deg, err));
-        } else {
-            return sq_cli_unknown("triangulate", a, err);
-        }
-    }
-    SQ_TRY(sq_cli_need_input("triangulate", &args, err));
     sq_model *m = NULL;
-    SQ_TRY(sq_cli_open(&args, &m, err));
+    SQ_TRY(sq_cli_open(a, &m, err));
     sq_triangles *t = NULL;
-    sq_status st = sq_face_triangulate(m, args.face, o, &t, err);
-    if (st == SQ_OK && args.output) st = sq_triangles_write(t, args.output, err);
-    if (st == SQ_OK && args.svg) st = sq_triangles_write(t, args.svg, err);
-    if (st == SQ_OK && args.report) st = sq_triangles_write_report(t, args.report, err);
+    sq_status st = sq_face_triangulate(m, a->face, &a->opt, &t, err);
+    if (st == SQ_OK && a->output) st = sq_triangles_write(t, a->output, err);
+    if (st == SQ_OK && a->svg) st = sq_triangles_write(t, a->svg, err);
+    if (st == SQ_OK && a->report) st = sq_triangles_write_report(t, a->report, err);
     char *text = NULL;
-    if (st == SQ_OK && !args.quiet) st = sq_cli_print(sq_triangles_describe(t, &text, err), &text);
+    if (st == SQ_OK && !a->quiet) st = sq_cli_print(sq_triangles_describe(t, &text, err), &text, a);
     sq_triangles_free(&t);
     sq_model_free(&m);
     return st;
 }
+
+static const sq_cli_opt triangulate_opts[] = {
+    {.name = "output", .short_name = 'o', .kind = SQ_CLI_OUTPUT, .value = "FILE", .def = "none",
+     .help = "the triangles as VTU (.vtu) or SVG (.svg)", .target = SQ_CLI_AT(output)},
+    {.name = "order", .kind = SQ_CLI_INT, .value = "P", .lo = 1, .hi = 12, .def = "4",
+     .help = "order of the curved triangles (1..12)", .target = SQ_CLI_AT(opt.tri_order)},
+    {.name = "size", .kind = SQ_CLI_REAL, .value = "H", .lo = 1e-300, .hi = 1e300,
+     .def = "sqrt(area)/3", .unit = "file unit", .help = "longest triangle edge",
+     .target = SQ_CLI_AT(opt.tri_size)},
+    {.name = "min-angle", .kind = SQ_CLI_REAL, .value = "A", .lo = 1.0, .hi = 30.0, .def = "20",
+     .unit = "deg", .help = "smallest angle of CGAL's Delaunay refinement (1..30)",
+     .target = SQ_CLI_AT(opt.tri_min_angle_deg)},
+    {.name = "max-turn", .kind = SQ_CLI_REAL, .value = "T", .lo = 1.0, .hi = 90.0, .def = "30",
+     .unit = "deg", .help = "largest turning of the boundary along one segment (1..90)",
+     .target = SQ_CLI_AT(opt.tri_max_turn_deg)},
+    SQ_CLI_OPT_SVG("a picture of the triangles"),
+    SQ_CLI_OPT_REPORT,
+    SQ_CLI_OPTS_READING,
+    {0}};
+
+const sq_cli_command sq_cli_triangulate = {
+    .name = "triangulate",
+    .summary = "Coarse curved triangulation of order P: CGAL constrained Delaunay refinement, "
+               "high-order boundary nodes exactly on the CAD curves, every element's scaled "
+               "Jacobian checked positive.",
+    .example = "semquad triangulate examples/half_disc.step --order 6 -o half_disc.vtu",
+    .opts = triangulate_opts,
+    .run = run_triangulate};

@@ -361,6 +361,8 @@ static sq_status hole_seed(const bpoly *p, int start, double seed[2], sq_error *
     return SQ_FAIL(err, SQ_ERR_GEOMETRY, "cannot find a point inside a hole of the face");
 }
 
+int sq_tri_order_for(int p) { return p < SQ_TRI_MAX_ORDER ? p : SQ_TRI_MAX_ORDER; }
+
 void sq_tri_options_default(sq_tri_options *opt)
 {
     memset(opt, 0, sizeof *opt);
@@ -614,7 +616,7 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
                          sq_error *err)
 {
     memset(out, 0, sizeof *out);
-    if (opt->order < 1 || opt->order > 12)
+    if (opt->order < 1 || opt->order > SQ_TRI_MAX_ORDER)
         return SQ_FAIL(err, SQ_ERR_USAGE, "order %d out of range 1..12", opt->order);
     if (!(opt->min_angle_deg >= 0.0) || opt->min_angle_deg > 30.0)
         return SQ_FAIL(err, SQ_ERR_USAGE, "minimum angle %g out of range [0, 30] degrees",

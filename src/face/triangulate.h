@@ -21,8 +21,11 @@
 #include "cad.h"
 #include "tri_mesh.h"
 
+/* The highest order of the curved triangles (their nodal sets stop there). */
+#define SQ_TRI_MAX_ORDER 12
+
 typedef struct {
-    int order;            /* P, 1..12 */
+    int order;            /* P, 1..SQ_TRI_MAX_ORDER */
     double size;          /* longest edge; <= 0: automatic (sqrt(area)/3) */
     double min_angle_deg; /* CGAL's angle bound, default 20; 0: none (size only) */
     double max_turn_deg;  /* largest boundary turning per segment, default 30 */
@@ -47,6 +50,10 @@ typedef struct {
 #define SQ_TRI_MAX_VERTICES 20000
 
 void sq_tri_options_default(sq_tri_options *opt);
+
+/* The order of the triangles a field of order p is solved on:
+ * isoparametric, up to SQ_TRI_MAX_ORDER (the one clamp of a field's order). */
+int sq_tri_order_for(int p);
 
 /* The size bound opt resolves to on a face of area `area`: opt->size, or
  * sqrt(|area|) / 3 where that is <= 0.  Callers that know the area set

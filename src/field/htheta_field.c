@@ -191,7 +191,7 @@ sq_status sq_htheta_compute(const cad_face *face, const sq_pattern *pattern,
         nextra++;
     }
     sq_tri_options tri = opt->tri;
-    tri.order = opt->tri.order > 0 ? opt->tri.order : (opt->order < 12 ? opt->order : 12);
+    tri.order = opt->tri.order > 0 ? opt->tri.order : sq_tri_order_for(opt->order);
     tri.nextra = nextra;
     tri.extra_xy = extra;
     tri.size = sq_tri_size(&tri, out->info.area);

@@ -4,11 +4,30 @@
 #include <fcntl.h>
 #include <stdlib.h>
 #include <string.h>
+#include <sys/stat.h>
 #include <unistd.h>
+
+sq_status sq_outfile_check(const char *path, sq_error *err)
+{
+    struct stat s;
+    if (!strcmp(path, "-") || stat(path, &s) != 0 || S_ISREG(s.st_mode)) return SQ_OK;
+    const char *what = S_ISDIR(s.st_mode)                         ? "a directory"
+                       : S_ISFIFO(s.st_mode)                      ? "a FIFO"
+                       : S_ISCHR(s.st_mode) || S_ISBLK(s.st_mode) ? "a device"
+                                                                  : "not a regular file";
+    return SQ_FAIL(err, SQ_ERR_USAGE,
+                   "%s is %s: outputs are written to regular files (or - for standard output)",
+                   path, what);
+}
 
 sq_status sq_outfile_open(const char *path, sq_outfile *out, sq_error *err)
 {
     memset(out, 0, sizeof *out);
+    SQ_TRY(sq_outfile_check(path, err));
+    if (!strcmp(path, "-")) {
+        out->fp = stdout;
+        return SQ_OK;
+    }
     size_t n = strlen(path);
     out->path = strdup(path);
     out->tmp = malloc(n + 32);
@@ -43,6 +62,11 @@ sq_status sq_outfile_open(const char *path, sq_outfile *out, sq_error *err)
 
 sq_status sq_outfile_commit(sq_outfile *out, sq_error *err)
 {
+    if (out->fp == stdout) {
+        int bad = fflush(stdout) != 0 || ferror(stdout);
+        out->fp = NULL;
+        return bad ? SQ_FAIL(err, SQ_ERR_OUTPUT, "cannot write to standard output") : SQ_OK;
+    }
     int bad = ferror(out->fp) != 0;
     bad |= fclose(out->fp) != 0;
     out->fp = NULL;
@@ -62,7 +86,7 @@ sq_status sq_outfile_commit(sq_outfile *out, sq_error *err)
 void sq_outfile_abort(sq_outfile *out)
 {
     if (!out) return;
-    if (out->fp) fclose(out->fp);
+    if (out->fp && out->fp != stdout) fclose(out->fp);
     if (out->tmp) remove(out->tmp);
     free(out->tmp);
     free(out->path);

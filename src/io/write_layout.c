@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 static const char *role_origin(const sq_layout *L, int k)
 {
@@ -295,6 +296,9 @@ sq_status sq_write_layout_step(const char *path, const cad_model *model, int fac
                                const cad_face *face, const sq_layout *L, int *nfaces,
                                sq_error *err)
 {
+    SQ_TRY(sq_outfile_check(path, err));
+    if (!strcmp(path, "-"))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "STEP cannot be written to standard output: name a file");
     int nc = 0;
     for (int e = 0; e < L->nedges; e++) nc += L->edges[e].cad_edge < 0;
     int *npts = malloc(sizeof(int) * (size_t)(nc + 1));

@@ -20,7 +20,8 @@ sq_status sq_write_layout_report(const char *path, const char *input, int face,
 sq_status sq_write_layout_svg(const char *path, const sq_layout_result *r, sq_error *err);
 
 /* Split face `face_index` of model along the layout's separatrices and
- * write the patches as STEP; *nfaces (may be NULL) gets the sub-face count. */
+ * write the patches as STEP; *nfaces (may be NULL) gets the sub-face count.
+ * A path that is not a regular file (or "-") is refused before any work. */
 sq_status sq_write_layout_step(const char *path, const cad_model *model, int face_index,
                                const cad_face *face, const sq_layout *L, int *nfaces,
                                sq_error *err);

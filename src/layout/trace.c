@@ -490,8 +490,10 @@ static sq_status run(sq_tracer *tr, const int *vertex_quads, walk_set *ws, sq_er
                 break;
             }
         }
+        int was = nactive;
         nactive = 0;
         for (int i = 0; i < ws->n; i++) nactive += ws->w[i].active;
+        if (nactive != was) sq_progress_report(&tr->opt.progress, "trace", ws->n - nactive, ws->n);
     }
     return SQ_OK;
 }

@@ -35,6 +35,7 @@
 #include "face_info.h"
 #include "separatrix.h"
 #include "singularity.h"
+#include "sq_progress.h"
 
 /* Two lines that are one separatrix traced from both ends (each front runs
  * back along the other line, or past its start, in the opposite direction)
@@ -54,6 +55,7 @@ typedef struct {
     double merge_distance; /* in steps: fronts closer than this meet (default 1) */
     double max_length;     /* length bound; <= 0: 4 * perimeter of the face */
     double tol;            /* Algorithm 1 tolerance on the angle (default 1e-9) */
+    sq_progress progress;  /* "trace": lines finished of all (default silent) */
 } sq_trace_options;
 
 /* Counters filled by sq_trace_separatrices (may be NULL). */

@@ -574,7 +574,8 @@ static sq_status smooth(const cad_face *face, const sq_face_info *info, vmesh *v
  * singular points free the relaxation gives up once it folds a curved
  * boundary quad (*folded): the attempt with them held follows. */
 static sq_status relax(const cad_face *face, const sq_face_info *info, vmesh *v, const int *keep,
-                       int move_singular, sq_relax_work **work, int *folded, sq_error *err)
+                       int move_singular, const sq_progress *progress, sq_relax_work **work,
+                       int *folded, sq_error *err)
 {
     int *deg = calloc((size_t)v->nv + 1, sizeof(int)), *bnd = calloc((size_t)v->nv + 1, sizeof(int));
     int *fixed = calloc((size_t)v->nv + 1, sizeof(int));
@@ -593,7 +594,7 @@ static sq_status relax(const cad_face *face, const sq_face_info *info, vmesh *v,
     for (int i = 0; i < v->nv; i++)
         fixed[i] = (keep && keep[i]) || (!bnd[i] && deg[i] != 4 && !move_singular) ||
                    (bnd[i] && at_face_corner(info, &v->xy[2 * i]));
-    sq_relax_mesh rm = {v->nv, v->nq, v->xy, v->quad, v->side_tag, fixed, move_singular, 0};
+    sq_relax_mesh rm = {v->nv, v->nq, v->xy, v->quad, v->side_tag, fixed, move_singular, 0, *progress};
     sq_status st = sq_quad_relax(face, &rm, work, err);
     *folded = rm.folded;
     free(deg);
@@ -985,7 +986,8 @@ static sq_status finish(const cad_face *face, const sq_face_info *info, vmesh *v
         sq_quad_mesh *m = NULL;
         memcpy(v->xy, smoothed, sizeof(double) * 2 * (size_t)v->nv);
         int folded = 0;
-        if (attempt < 2) st = relax(face, info, v, keep, attempt == 0, &work, &folded, err);
+        if (attempt < 2)
+            st = relax(face, info, v, keep, attempt == 0, &opt->progress, &work, &folded, err);
         if (folded) continue;
         if (st == SQ_OK && opt->nbl > 0) st = bl_march(face, opt, v, err);
         if (st == SQ_OK) st = raise_order(face, v, Q, opt->nodes, opt, &m, err);
@@ -1098,8 +1100,10 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
         en.base[e] = next_id;
         next_id += n - 1;
     }
-    for (int q = 0; q < L->npatches && st == SQ_OK; q++)
+    for (int q = 0; q < L->npatches && st == SQ_OK; q++) {
         st = fill_patch(L, &en, 1, q, &next_id, &grids[q], err);
+        sq_progress_report(&opt->progress, "mesh", q + 1, L->npatches);
+    }
     vmesh v = {0};
     if (st == SQ_OK) st = build_vmesh(L, grids, next_id, &v, err);
     if (st == SQ_OK) st = finish(face, info, &v, opt, out, err);

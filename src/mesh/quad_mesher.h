@@ -28,6 +28,7 @@
 #include "cross_field.h"
 #include "layout.h"
 #include "quad_mesh.h"
+#include "sq_progress.h"
 
 typedef struct {
     int order;          /* Q, 1..10 (default 4) */
@@ -46,6 +47,8 @@ typedef struct {
     /* refuse (SQ_ERR_USAGE) a quantization with more quads than this,
      * before the quads are allocated (default SQ_MAX_QUADS) */
     double max_quads;
+    /* "mesh" (patches filled of all) and the relaxation's "relax" */
+    sq_progress progress;
 } sq_mesher_options;
 
 /* 2e7 quads of order 4 take about 10 GB (25 nodes of 16 bytes each, the

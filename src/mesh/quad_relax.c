@@ -686,6 +686,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
     if (st == SQ_OK && m->stop_on_fold) st = boundary_folds(face, m, w, held, was, 1, &m->folded, err);
     int fresh = 0;
     for (int it = 0; it < MAX_NEWTON && st == SQ_OK && w->ndof > 0 && E < HUGE_VAL; it++) {
+        sq_progress_report(&m->progress, "relax", it, MAX_NEWTON);
         for (int i = 0; i < m->nv && st == SQ_OK; i++)
             if (w->var[i] >= 0 && w->edge[i] >= 0)
                 st = on_edge(face, w, i, &w->s[i], &m->xy[2 * i], &w->tan[2 * i], err);

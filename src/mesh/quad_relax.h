@@ -28,6 +28,7 @@
 #define SQ_QUAD_RELAX_H
 
 #include "cad.h"
+#include "sq_progress.h"
 #include "sq_status.h"
 
 typedef struct {
@@ -42,6 +43,7 @@ typedef struct {
      * relaxation stopped */
     int stop_on_fold;
     int folded;
+    sq_progress progress; /* "relax": Newton steps of the most allowed (default silent) */
 } sq_relax_mesh;
 
 /* What one relaxation prepares (unknowns, the Hessian's pattern, its
