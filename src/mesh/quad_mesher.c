@@ -1,0 +1,149 @@
+/* semquad — the layout road (quad_mesher.h): a valid layout's chords
+ * quantized, its patches meshed and glued; then, on either road's vertex
+ * mesh, untangling, relaxation, boundary layers and order Q. */
+#include "quad_mesher_private.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+/* a relaxed mesh is kept at once when its curved quads are at least this
+ * far from folding (smallest scaled Jacobian over their nodes) */
+#define SJ_ACCEPT 0.2
+
+void sq_mesher_options_default(sq_mesher_options *opt)
+{
+    memset(opt, 0, sizeof *opt);
+    opt->order = 4;
+    opt->nodes = SQ_NODES_GLL;
+    opt->bl_ratio = 1.2;
+    opt->max_quads = SQ_MAX_QUADS;
+}
+
+sq_status sq_mesher_check_size(double area, double size, double max_quads, sq_error *err)
+{
+    double quads = fabs(area) / (size * size);
+    if (!(quads <= max_quads))
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "--size %g gives about %.3g quads, more than --max-quads %.3g: a size of "
+                       "%.3g or more fits",
+                       size, quads, max_quads, sqrt(fabs(area) / max_quads));
+    return SQ_OK;
+}
+
+static int is_quad(const sq_layout_patch *p) { return p->ncorners == 4 && p->ncycles == 1; }
+
+/* Design 3 from the glued vertex mesh on: untangling, relaxation, order Q.
+ * *out is NULL unless SQ_OK. */
+static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh *v,
+                        const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
+{
+    int Q = opt->order;
+    /* the boundary layers keep their grading: no smoothing there */
+    int *keep = NULL;
+    sq_status st = qm_bl_keep(face, opt, v, &keep, err);
+    /* untangling, where transfinite interpolation folded a quad */
+    int folded = 0;
+    for (int q = 0; q < v->nq && st == SQ_OK; q++) folded += !qm_quad_valid(v, q);
+    if (st == SQ_OK && folded) st = qm_smooth(face, info, v, keep, err);
+    /* relaxed with the singular points free to even out their angles, then
+     * held where the field put them, then not relaxed at all: the first of
+     * these whose curved quads all have a scaled Jacobian of at least
+     * SJ_ACCEPT, else the one with the largest smallest scaled Jacobian */
+    double *smoothed = st == SQ_OK ? malloc(sizeof(double) * 2 * ((size_t)v->nv + 1)) : NULL;
+    if (st == SQ_OK && !smoothed) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) memcpy(smoothed, v->xy, sizeof(double) * 2 * (size_t)v->nv);
+    double best_sj = -HUGE_VAL;
+    sq_relax_work *work = NULL; /* the first relaxation's Hessian, for the second */
+    for (int attempt = 0; attempt < 3 && st == SQ_OK; attempt++) {
+        sq_quad_mesh *m = NULL;
+        memcpy(v->xy, smoothed, sizeof(double) * 2 * (size_t)v->nv);
+        int folded = 0;
+        if (attempt < 2) st = qm_relax(face, info, v, keep, attempt == 0, &work, &folded, err);
+        if (folded) continue;
+        if (st == SQ_OK && opt->nbl > 0) st = qm_bl_march(face, opt, v, err);
+        if (st == SQ_OK) st = qm_raise_order(face, v, Q, opt->nodes, opt, &m, err);
+        sq_quad_quality qq;
+        if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, &qq, err);
+        if (st == SQ_OK && qq.min_scaled_jacobian > best_sj) {
+            best_sj = qq.min_scaled_jacobian;
+            sq_quad_mesh_free(out);
+            *out = m;
+            m = NULL;
+        }
+        sq_quad_mesh_free(&m);
+        if (best_sj >= SJ_ACCEPT) break;
+    }
+    sq_relax_work_free(&work);
+    if (st != SQ_OK) sq_quad_mesh_free(out);
+    free(smoothed);
+    free(keep);
+    return st;
+}
+
+sq_status sq_mesh_linear_quads(const cad_face *face, const sq_face_info *info,
+                               const sq_linear_quads *lq, const sq_mesher_options *opt,
+                               sq_quad_mesh **out, sq_error *err)
+{
+    *out = NULL;
+    if (opt->order < 1 || opt->order > 10)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "quad order %d outside 1..10", opt->order);
+    if (opt->nbl > 0)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "boundary layers need a quad layout (--bl)");
+    qm_vmesh v = {lq->nv, lq->nq, malloc(sizeof(double) * 2 * ((size_t)lq->nv + 1)),
+               calloc((size_t)lq->nv + 1, sizeof(int)), malloc(sizeof(int) * 4 * ((size_t)lq->nq + 1)),
+               malloc(sizeof(int) * ((size_t)lq->nq + 1)), malloc(sizeof(int) * 4 * ((size_t)lq->nq + 1))};
+    sq_status st = v.xy && v.foot && v.quad && v.patch && v.side_tag
+                       ? SQ_OK
+                       : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) {
+        memcpy(v.xy, lq->xy, sizeof(double) * 2 * (size_t)lq->nv);
+        memcpy(v.quad, lq->quad, sizeof(int) * 4 * (size_t)lq->nq);
+        memcpy(v.patch, lq->block, sizeof(int) * (size_t)lq->nq);
+        memcpy(v.side_tag, lq->side_tag, sizeof(int) * 4 * (size_t)lq->nq);
+        st = finish(face, info, &v, opt, out, err);
+    }
+    qm_vmesh_free(&v);
+    return st;
+}
+
+double sq_mesher_default_size(double area) { return sqrt(fabs(area)) / 8.0; }
+
+sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const sq_layout *L,
+                         const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
+{
+    *out = NULL;
+    int Q = opt->order;
+    if (Q < 1 || Q > 10) return SQ_FAIL(err, SQ_ERR_USAGE, "quad order %d outside 1..10", Q);
+    for (int q = 0; q < L->npatches; q++)
+        if (!is_quad(&L->patches[q]))
+            return SQ_FAIL(err, SQ_ERR_LAYOUT, "patch %d is not a quad (%d corners)", q,
+                           L->patches[q].ncorners);
+    double size = opt->size > 0.0 ? opt->size : sq_mesher_default_size(L->face_area);
+    int *nseg = malloc(sizeof(int) * ((size_t)L->nedges + 1));
+    int *grade = malloc(sizeof(int) * ((size_t)L->nedges + 1));
+    double *elen = malloc(sizeof(double) * ((size_t)L->nedges + 1));
+    double *cum = malloc(sizeof(double) * ((size_t)L->nedges * (SIZE_SAMPLES + 1) + 1));
+    sq_status st = nseg && grade && elen && cum ? SQ_OK
+                                                : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) qm_bl_grading(L, info, opt, grade);
+    if (st == SQ_OK) st = qm_size_measure(L, face, info, opt, grade, elen, cum, err);
+    if (st == SQ_OK) st = qm_quantize(L, elen, size, grade, opt, nseg, err);
+    /* the quantization can exceed area / size^2 (one segment at least per
+     * chord, sides matched): check its own count before allocating */
+    double nquads = st == SQ_OK ? qm_quantized_quads(L, nseg) : 0.0;
+    if (st == SQ_OK && opt->max_quads > 0.0 && nquads > opt->max_quads)
+        st = SQ_FAIL(err, SQ_ERR_USAGE,
+                     "the layout's chords at size %g give %.3g quads, more than --max-quads %.3g; "
+                     "try a size of %.3g or more",
+                     size, nquads, opt->max_quads, size * sqrt(nquads / opt->max_quads));
+    qm_vmesh v = {0};
+    if (st == SQ_OK) st = qm_assemble(L, face, opt, nseg, grade, cum, &v, err);
+    if (st == SQ_OK) st = finish(face, info, &v, opt, out, err);
+    qm_vmesh_free(&v);
+    free(nseg);
+    free(grade);
+    free(elen);
+    free(cum);
+    return st;
+}
