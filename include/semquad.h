@@ -181,8 +181,9 @@ typedef struct {
 SQ_API void sq_options_init(sq_options *o);
 
 /* SQ_ERR_USAGE naming the first bad value (an unknown name, an order out
- * of range, boundary layers without thickness...): every stage checks its
- * options, this checks them all before any work. */
+ * of range, a negative or non-finite length, tolerance or size, boundary
+ * layers without thickness...): every stage checks its options, this
+ * checks them all before any work. */
 SQ_API sq_status sq_options_check(const sq_options *o, sq_error *err);
 
 /* ---- Output files -------------------------------------------------------

@@ -98,6 +98,23 @@ with semquad.open(os.path.join(examples, "half_disc.step")) as model:
         except semquad.Error as e:
             if e.status != 2:
                 fail("%s: status %d (%s)" % (opts, e.status, e))
+    # negative or non-finite lengths are refused, naming the field (they
+    # once read as the default)
+    for opts in ({"size": -0.1}, {"merge_distance": float("nan")},
+                 {"bl_first": float("inf")}, {"field": "htheta", "size": -1e-300}):
+        try:
+            model.face().mesh(**opts)
+            fail("%s accepted" % opts)
+        except semquad.Error as e:
+            key = [k for k in opts if k != "field"][0]
+            if e.status != 2 or not str(e).startswith(key + " "):
+                fail("%s: status %d (%s)" % (opts, e.status, e))
+try:
+    semquad.open(os.path.join(examples, "half_disc.step"), heal_tolerance=-1e-6)
+    fail("heal_tolerance -1e-6 accepted")
+except semquad.Error as e:
+    if e.status != 2 or "heal_tolerance" not in str(e):
+        fail("heal_tolerance -1e-6: status %d (%s)" % (e.status, e))
 
 print("%d passed, %d failed" % (1 if not failures else 0, 1 if failures else 0))
 sys.exit(1 if failures else 0)

@@ -4,6 +4,7 @@
 #include "converge.h"
 #include "outfile.h"
 
+#include <math.h>
 #include <stdarg.h>
 #include <stdio.h>
 #include <stdlib.h>
@@ -183,8 +184,33 @@ sq_status sq_output_check(const char *path, sq_error *err)
     return sq_outfile_check(path, err);
 }
 
+/* A length, tolerance or size: finite and >= 0 (0 is the default); a
+ * negative one used to read as the default. */
+static sq_status check_length(const char *field, double v, sq_error *err)
+{
+    if (isfinite(v) && v >= 0.0) return SQ_OK;
+    return SQ_FAIL(err, SQ_ERR_USAGE, "%s %g: expects a finite value >= 0 (0: the default)", field,
+                   v);
+}
+
+static sq_status check_lengths(const sq_options *o, sq_error *err)
+{
+    SQ_TRY(check_length("heal_tolerance", o->heal_tolerance, err));
+    SQ_TRY(check_length("tri_size", o->tri_size, err));
+    SQ_TRY(check_length("merge_distance", o->merge_distance, err));
+    SQ_TRY(check_length("size", o->size, err));
+    SQ_TRY(check_length("bl_first", o->bl_first, err));
+    for (int k = 0; o->study_sizes && k < o->study_nsizes; k++) {
+        char name[32];
+        snprintf(name, sizeof name, "study_sizes[%d]", k);
+        SQ_TRY(check_length(name, o->study_sizes[k], err));
+    }
+    return SQ_OK;
+}
+
 sq_status sq_options_check(const sq_options *o, sq_error *err)
 {
+    SQ_TRY(check_lengths(o, err));
     sq_api_road road;
     sq_layout_options lo;
     sq_mesher_options mo;

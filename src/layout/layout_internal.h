@@ -1,5 +1,6 @@
-/* semquad — internals shared by layout_graph.c, layout_check.c and
- * layout_repair.c (not part of the public contract). */
+/* semquad — internals shared by the layout's files: the graph
+ * (layout_graph.c, layout_patches.c, layout_intersect.c, layout_seps.c),
+ * its checks and its repairs (not part of the public contract). */
 #ifndef SQ_LAYOUT_INTERNAL_H
 #define SQ_LAYOUT_INTERNAL_H
 
@@ -24,7 +25,14 @@ sq_status lay_intersections(const sq_separatrix_set *set, double tol, lay_hit **
  * vertex_quads; frees the previous graph. */
 sq_status lay_graph_build(sq_layout *L, const cad_face *face, const sq_face_info *info,
                           sq_error *err);
-void lay_graph_clear(sq_layout *L);
+
+/* The patches of L's nodes and edges: the faces of the planar graph
+ * (layout_patches.c). */
+sq_status lay_patches_build(sq_layout *L, const cad_face *face, sq_error *err);
+
+/* p grown to hold `need` elements of `size` bytes (capacity *cap doubled);
+ * NULL when out of memory (p is still valid then). */
+void *lay_grow(void *p, int *cap, int need, size_t size);
 
 /* separatrix-set helpers (the layout owns deep copies) */
 sq_status lay_sep_push(sq_separatrix_set *set, const double *xy, int npts, sq_sep_end start,
@@ -33,9 +41,6 @@ void lay_sep_remove(sq_separatrix_set *set, int k);
 void lay_sepset_free(sq_separatrix_set *set);
 sq_status lay_sing_push(sq_layout *L, double x, double y, int valence, sq_lrole role,
                         sq_error *err);
-
-/* Arc length of polyline xy[npts] up to position pos (segment + t). */
-double lay_poly_arclen(const double *xy, int npts, double pos);
 
 /* Winding-number test of p against the closed polygon xy[n]. */
 int lay_poly_contains(const double *xy, int n, const double p[2]);

@@ -1,0 +1,95 @@
+/* semquad — internals shared by the layout's repairs, repair_*.c and the
+ * correction loop layout_repair.c (not a public contract). */
+#ifndef SQ_REPAIR_PRIVATE_H
+#define SQ_REPAIR_PRIVATE_H
+
+#include "layout_internal.h"
+
+/* The state of one correction (sq_layout_build). */
+typedef struct {
+    sq_layout *L;
+    const cad_face *face;
+    const sq_face_info *info;
+    const sq_cross_field *field;
+    double step, maxlen, tol;
+    int nb;        /* boundary sample segments */
+    double *bxy;   /* 4*nb: segment ends */
+    int *bedge;    /* per segment: CAD edge */
+    double *bs;    /* 2*nb: arc lengths of the ends */
+    lay_hit *hit;  /* the set's crossings (crossings()), nhit of them, */
+    int nhit, hit_ok; /* valid while hit_ok: the set has not changed */
+    int trials;    /* patch repairs tried (try_candidate), up to MAX_TRIALS */
+    double work;   /* separatrix points the set-level passes visited (WORK_MAX) */
+} lay_repair;
+
+/* The repairs' work bound, in separatrix points visited by the set-level
+ * passes (each finds every crossing of the set again): about 10 s of one
+ * core for the densest sets (1.5e-5 s a point at 10^4 crossings); the
+ * examples' layouts take less than 2.4e5 (T106), 0.02 to 1 s.  (A repair
+ * line's steps have their own bound.)  A bound on the work, not on the
+ * clock, keeps the answer the same on every machine. */
+#define WORK_MAX 1e6
+
+/* A repair line (repair_line.c): its points and where it ended. */
+typedef struct {
+    int npts, cap;
+    double *xy;
+    sq_sep_end end;
+    int hit_sep;     /* SQ_END_SEPARATRIX-like end: separatrix and position */
+    double hit_pos;
+} lay_line;
+
+/* ---- repair_line.c ---- */
+
+/* The boundary sampled into segments (r->bxy, r->bs, r->bedge). */
+sq_status lay_sample_boundary(lay_repair *r, sq_error *err);
+
+/* Segment p-q against segment a-b: parameters t on p-q and u on a-b. */
+int lay_seg_seg(const double p[2], const double q[2], const double a[2], const double b[2],
+                double *t, double *u);
+
+/* A cross branch at x nearest to direction d (unit); 1 if x is outside. */
+int lay_branch(const lay_repair *r, const double x[2], int *elem, const double d[2],
+               double out[2]);
+
+/* A field line from p0 in direction d0 to the boundary or a separatrix
+ * (hits within `skip` of p0 ignored); out->xy malloc'ed. */
+sq_status lay_trace_line(lay_repair *r, const double p0[2], const double d0[2], double skip,
+                         lay_line *out, sq_error *err);
+
+/* The line appended to the set from `start`, ending on the boundary, at a
+ * nearby inserted node or at a new T-junction. */
+sq_status lay_add_line(lay_repair *r, lay_line *ln, sq_sep_end start, sq_error *err);
+
+/* ---- repair_sep.c ---- */
+
+double lay_nearest_pos(const sq_separatrix *s, const double p[2], double *dist);
+sq_status lay_split_sep(sq_layout *L, int k, double pos, const double p[2], int node,
+                        sq_error *err);
+void lay_leave_dir(const sq_separatrix *s, int at_end, double d[2], double scale);
+
+/* ---- repair_spoke.c ---- */
+
+int lay_patch_centroid(const sq_layout *L, const sq_layout_patch *P, double cen[2]);
+sq_status lay_side_mid(lay_repair *r, const sq_layout_patch *P, int k, int *edge, double *frac,
+                       double xy[2], sq_error *err);
+sq_status lay_straight_sep(sq_layout *L, int M, const double a[2], const double b[2],
+                           sq_sep_end end, sq_error *err);
+sq_status lay_add_spoke(lay_repair *r, int M, const double cen[2], const double *path, int np,
+                        int edge, double frac, const double p[2], sq_error *err);
+
+/* ---- repair_nsplit.c ---- */
+
+/* The n-quad split of patch p; spokes may bend only if `bent`. */
+sq_status lay_split_centre(lay_repair *r, int p, int bent, sq_error *err);
+
+/* ---- the repairs: each applies at most one change (*done) ---- */
+
+sq_status lay_set_repair(lay_repair *r, int *done, sq_error *err);        /* repair_set.c */
+sq_status lay_cut_annulus(lay_repair *r, int *done, sq_error *err);       /* repair_annulus.c */
+sq_status lay_split_valence2(lay_repair *r, int *done, sq_error *err);    /* repair_triangle.c */
+sq_status lay_split_triangle(lay_repair *r, int *done, sq_error *err);    /* repair_triangle.c */
+/* kept only if fewer than `before` defects are left (repair_polygon.c) */
+sq_status lay_repair_polygon(lay_repair *r, int before, int *done, sq_error *err);
+
+#endif

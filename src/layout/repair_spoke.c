@@ -1,0 +1,122 @@
+/* semquad — spokes of the patch splits: separatrices from a node inserted in
+ * a patch to the arc-length midpoints of its sides (the sides' midpoints, the
+ * patch's centroid, straight or bent spokes ending on the boundary or in a
+ * T-junction). */
+#include "repair_private.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+/* Arc-length midpoint of the half-edges half[a..b) of patch P: the edge and
+ * the fraction along it (from its n0). */
+static void chain_mid(const sq_layout *L, const sq_layout_patch *P, int a, int b, int *edge,
+                      double *frac)
+{
+    double tot = 0.0;
+    for (int k = a; k < b; k++) tot += L->edges[P->half[k % P->nhalf].edge].length;
+    double acc = 0.0;
+    for (int k = a; k < b; k++) {
+        const sq_layout_half *h = &P->half[k % P->nhalf];
+        double l = L->edges[h->edge].length;
+        if (acc + l >= 0.5 * tot || k == b - 1) {
+            double f = l > 0 ? (0.5 * tot - acc) / l : 0.5;
+            *edge = h->edge;
+            *frac = h->reversed ? 1.0 - f : f;
+            return;
+        }
+        acc += l;
+    }
+}
+
+/* Area centroid of the patch's outer cycle (Green's theorem on its
+ * polylines); 0 if the cycle has no area. */
+int lay_patch_centroid(const sq_layout *L, const sq_layout_patch *P, double cen[2])
+{
+    int end = P->ncycles > 0 ? P->cycle_start[1] : P->nhalf;
+    double A = 0.0, cx = 0.0, cy = 0.0;
+    for (int k = 0; k < end; k++) {
+        const sq_layout_edge *E = &L->edges[P->half[k].edge];
+        for (int j = 0; j + 1 < E->npts; j++) {
+            int j0 = P->half[k].reversed ? E->npts - 1 - j : j;
+            int j1 = P->half[k].reversed ? j0 - 1 : j0 + 1;
+            const double *u = &E->xy[2 * j0], *v = &E->xy[2 * j1];
+            double c = u[0] * v[1] - v[0] * u[1];
+            A += c;
+            cx += (u[0] + v[0]) * c;
+            cy += (u[1] + v[1]) * c;
+        }
+    }
+    if (!(fabs(A) > 0)) return 0;
+    cen[0] = cx / (3.0 * A);
+    cen[1] = cy / (3.0 * A);
+    return 1;
+}
+
+/* Arc-length midpoint of side k of patch P (corner k to corner k+1): the
+ * edge, the fraction along it and the point. */
+sq_status lay_side_mid(lay_repair *r, const sq_layout_patch *P, int k, int *edge, double *frac,
+                       double xy[2], sq_error *err)
+{
+    int a = P->corner_half[k], b = P->corner_half[(k + 1) % P->ncorners];
+    if (b <= a) b += P->nhalf;
+    chain_mid(r->L, P, a, b, edge, frac);
+    return sq_layout_edge_point(r->L, r->face, *edge, *frac, xy, err);
+}
+
+/* Separatrix from inserted node M along the path xy[np] (each segment cut
+ * into 16 pieces), ending in `end`. */
+static sq_status path_sep(sq_layout *L, int M, const double *xy, int np, sq_sep_end end,
+                          sq_error *err)
+{
+    enum { PIECES = 16 };
+    int n = (np - 1) * PIECES + 1;
+    double *q = malloc(2 * (size_t)n * sizeof *q);
+    if (!q) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int i = 0; i + 1 < np; i++)
+        for (int j = 0; j < PIECES + (i + 2 == np); j++) {
+            double t = (double)j / PIECES;
+            const double *a = &xy[2 * i], *b = a + 2;
+            q[2 * (i * PIECES + j)] = a[0] + t * (b[0] - a[0]);
+            q[2 * (i * PIECES + j) + 1] = a[1] + t * (b[1] - a[1]);
+        }
+    sq_status st = lay_sep_push(&L->seps, q, n, (sq_sep_end){SQ_END_SINGULAR, M, 0.0}, end, err);
+    free(q);
+    return st;
+}
+
+/* Straight separatrix from inserted node M (at a) to b, ending in `end`. */
+sq_status lay_straight_sep(sq_layout *L, int M, const double a[2], const double b[2],
+                           sq_sep_end end, sq_error *err)
+{
+    double xy[4] = {a[0], a[1], b[0], b[1]};
+    return path_sep(L, M, xy, 2, end, err);
+}
+
+/* A spoke from inserted node M along path[np] (from M to point p on layout
+ * edge `edge` at fraction frac; NULL: straight from cen): on the boundary it
+ * ends in a foot, on a separatrix in a new T-junction, repaired next (the
+ * "patches influenced" of Jezdimirović §6.3). */
+sq_status lay_add_spoke(lay_repair *r, int M, const double cen[2], const double *path, int np,
+                        int edge, double frac, const double p[2], sq_error *err)
+{
+    sq_layout *L = r->L;
+    const sq_layout_edge *E = &L->edges[edge];
+    sq_sep_end end;
+    if (E->cad_edge >= 0) {
+        end = (sq_sep_end){SQ_END_BOUNDARY, E->cad_edge, E->s0 + frac * (E->s1 - E->s0)};
+    } else {
+        double q[2] = {p[0], p[1]}, dist;
+        /* the edge's separatrix, unless an earlier spoke split it before q */
+        int sep = E->sep;
+        double pos = lay_nearest_pos(&L->seps.s[sep], q, &dist);
+        for (int k = 0; k < L->seps.n && dist > r->tol; k++) {
+            double d, ps = lay_nearest_pos(&L->seps.s[k], q, &d);
+            if (d < dist) sep = k, pos = ps, dist = d;
+        }
+        SQ_TRY(lay_sing_push(L, q[0], q[1], 3, SQ_LROLE_TJUNCTION, err));
+        end = (sq_sep_end){SQ_END_SINGULAR, L->nsing - 1, 0.0};
+        SQ_TRY(lay_split_sep(L, sep, pos, q, L->nsing - 1, err));
+    }
+    if (path) return path_sep(L, M, path, np, end, err);
+    return lay_straight_sep(L, M, cen, p, end, err);
+}

@@ -1,0 +1,135 @@
+/* semquad — chord quantization (quad_mesher.h design 1): segments per layout
+ * edge from its length, or its measure in units of the field's size e^H, and
+ * the boundary layers' segments; opposite sides of every patch matched. */
+#include "quad_mesher_private.h"
+
+#include <math.h>
+#include <stdlib.h>
+
+#define MAX_SEGMENTS 1000000 /* per edge: quantization that runs away is a bug */
+
+/* Segments on side k of patch p. */
+long qm_side_count(const sq_layout_patch *p, int k, const int *n)
+{
+    long c = 0;
+    for (int h = p->side_start[k]; h < p->side_start[k + 1]; h++) c += n[p->half[h].edge];
+    return c;
+}
+
+/* Quads of a quantization: the product of each patch's two side counts. */
+double qm_quantized_quads(const sq_layout *L, const int *n)
+{
+    double quads = 0.0;
+    for (int q = 0; q < L->npatches; q++)
+        quads += (double)qm_side_count(&L->patches[q], 0, n) *
+                 (double)qm_side_count(&L->patches[q], 1, n);
+    return quads;
+}
+
+/* Segments an edge of length len needs: its layers, then the rest at size. */
+static int edge_segments(double len, double size, int grade, const sq_mesher_options *o)
+{
+    int ends = (grade & 1) + ((grade & 2) >> 1), nb = 0;
+    double rest = len;
+    while (ends && nb < o->bl_layers && rest - ends * o->bl_first * pow(o->bl_ratio, nb) > 0.0) {
+        rest -= ends * o->bl_first * pow(o->bl_ratio, nb);
+        nb++;
+    }
+    long v = lround(rest / size);
+    return (int)fmin((double)(ends * nb + (v < 1 ? 1 : v)), MAX_SEGMENTS);
+}
+
+/* Edge measure in units of the field's size: m[e] = the integral of
+ * ds / e^H along edge e (its length when the field carries no size), and
+ * its cumulative values at SIZE_SAMPLES + 1 equal arc-length fractions.
+ * Boundary-layer edges keep their length: their grading is absolute. */
+sq_status qm_size_measure(const sq_layout *L, const cad_face *face, const sq_face_info *info,
+                          const sq_mesher_options *o, const int *grade, double *m, double *cum,
+                          sq_error *err)
+{
+    for (int e = 0; e < L->nedges; e++) {
+        double *c = &cum[(size_t)e * (SIZE_SAMPLES + 1)], prev = 0.0;
+        int elem = -1;
+        for (int k = 0; k <= SIZE_SAMPLES; k++) {
+            double x[2], r = 1.0;
+            if (o->field && o->field->size && !grade[e]) {
+                SQ_TRY(sq_layout_edge_point(L, face, e, (double)k / SIZE_SAMPLES, x, err));
+                double sz = o->field->size(o->field->ctx, x, &elem);
+                /* e^H vanishes at a valence-3 point and blows up at a
+                 * valence-5 one: bounded to a factor 4 either way */
+                r = sz > 0.0 ? 1.0 / fmin(fmax(sz, 0.25), 4.0) : 1.0;
+            }
+            c[k] = k == 0 ? 0.0 : c[k - 1] + 0.5 * (prev + r) * L->edges[e].length / SIZE_SAMPLES;
+            prev = r;
+        }
+        m[e] = c[SIZE_SAMPLES];
+    }
+    /* e^H is relative: scaled by c with c^2 the mean of e^{-2H} over the
+     * face (sampled on a grid), so that about area / size^2 quads result,
+     * as without it */
+    if (o->field && o->field->size) {
+        double sum = 0.0;
+        int cnt = 0, elem = -1;
+        for (int j = 0; j < SIZE_SAMPLES; j++)
+            for (int i = 0; i < SIZE_SAMPLES; i++) {
+                double x[2] = {info->bbox[0] + (i + 0.5) / SIZE_SAMPLES * (info->bbox[2] - info->bbox[0]),
+                               info->bbox[1] + (j + 0.5) / SIZE_SAMPLES * (info->bbox[3] - info->bbox[1])};
+                double sz = o->field->size(o->field->ctx, x, &elem);
+                if (sz <= 0.0) continue; /* outside */
+                sz = fmin(fmax(sz, 0.25), 4.0);
+                sum += 1.0 / (sz * sz);
+                cnt++;
+            }
+        double c = cnt ? sqrt(sum / cnt) : 1.0;
+        for (int e = 0; e < L->nedges; e++)
+            if (!grade[e]) {
+                m[e] /= c;
+                for (int k = 0; k <= SIZE_SAMPLES; k++) cum[(size_t)e * (SIZE_SAMPLES + 1) + k] /= c;
+            }
+    }
+    return SQ_OK;
+}
+
+/* Arc-length fraction where the cumulative measure cum reaches fraction u. */
+double qm_measure_fraction(const double *cum, double u)
+{
+    double target = u * cum[SIZE_SAMPLES];
+    int k = 0;
+    while (k < SIZE_SAMPLES - 1 && cum[k + 1] < target) k++;
+    double d = cum[k + 1] - cum[k];
+    return (k + (d > 0.0 ? (target - cum[k]) / d : 0.0)) / SIZE_SAMPLES;
+}
+
+/* Design 1: chord quantization. */
+sq_status qm_quantize(const sq_layout *L, const double *len, double size, const int *grade,
+                      const sq_mesher_options *o, int *n, sq_error *err)
+{
+    for (int e = 0; e < L->nedges; e++) n[e] = edge_segments(len[e], size, grade[e], o);
+    for (int changed = 1; changed;) {
+        changed = 0;
+        for (int q = 0; q < L->npatches; q++) {
+            const sq_layout_patch *p = &L->patches[q];
+            for (int k = 0; k < 2; k++) {
+                long a = qm_side_count(p, k, n), c = qm_side_count(p, k + 2, n);
+                if (a == c) continue;
+                int s = a < c ? k : k + 2, best = -1;
+                double ratio = -1.0;
+                for (int h = p->side_start[s]; h < p->side_start[s + 1]; h++) {
+                    int e = p->half[h].edge;
+                    double r = len[e] / n[e];
+                    if (r > ratio) {
+                        ratio = r;
+                        best = e;
+                    }
+                }
+                n[best] += (int)labs(a - c);
+                if (n[best] > MAX_SEGMENTS)
+                    return SQ_FAIL(err, SQ_ERR_LAYOUT,
+                                   "chord quantization does not settle (patch %d): the layout's "
+                                   "chords are inconsistent", q);
+                changed = 1;
+            }
+        }
+    }
+    return SQ_OK;
+}

@@ -1,0 +1,109 @@
+/* semquad — internals shared by the files of the layout road and the
+ * mesher's second half (quad_mesher.c, quad_chords.c, quad_layers.c,
+ * quad_transfinite.c, quad_assemble.c, quad_untangle.c, quad_raise.c; not a
+ * public contract).  The designs cited are those of quad_mesher.h. */
+#ifndef SQ_QUAD_MESHER_PRIVATE_H
+#define SQ_QUAD_MESHER_PRIVATE_H
+
+#include "quad_mesher.h"
+#include "quad_relax.h"
+
+/* Samples of an edge's size measure (qm_size_measure). */
+#define SIZE_SAMPLES 32
+
+/* The nodes of every layout edge, placed once (design 2). */
+typedef struct {
+    const int *n;  /* segments per edge */
+    long *base;    /* first global id of each edge's interior points */
+    double **pts;  /* per edge: n*Q+1 points from n0 to n1 */
+} qm_edge_nodes;
+
+/* One patch's grid of vertices (design 3). */
+typedef struct {
+    int NU, NV;      /* grid points - 1 along u and v */
+    double *xy;      /* 2*(NU+1)*(NV+1), index j*(NU+1)+i */
+    long *gid;
+    int *tag[4];     /* CAD edge under each boundary segment of side k, in grid order */
+} qm_patch_grid;
+
+/* Vertex-level mesh: patch grids of corner vertices glued along edges. */
+typedef struct {
+    int nv, nq;
+    double *xy;     /* 2*nv */
+    int *foot;      /* nv: 1 where a separatrix ends on the boundary */
+    int *quad;      /* 4*nq corner vertices, counter-clockwise */
+    int *patch;     /* nq */
+    int *side_tag;  /* 4*nq: CAD edge under side k, or -1 */
+} qm_vmesh;
+
+/* ---- quad_chords.c: design 1 ---- */
+
+/* Segments on side k of quad patch p, n segments per edge. */
+long qm_side_count(const sq_layout_patch *p, int k, const int *n);
+/* Quads of a quantization: the product of each patch's two side counts. */
+double qm_quantized_quads(const sq_layout *L, const int *n);
+/* Each edge's measure m[e] and its cumulative values cum[e * (SIZE_SAMPLES
+ * + 1) + k] (in units of the field's size where it carries one). */
+sq_status qm_size_measure(const sq_layout *L, const cad_face *face, const sq_face_info *info,
+                          const sq_mesher_options *o, const int *grade, double *m, double *cum,
+                          sq_error *err);
+/* Arc-length fraction where the cumulative measure cum reaches fraction u. */
+double qm_measure_fraction(const double *cum, double u);
+/* Segments per edge n[e], opposite sides of every patch matched. */
+sq_status qm_quantize(const sq_layout *L, const double *len, double size, const int *grade,
+                      const sq_mesher_options *o, int *n, sq_error *err);
+
+/* ---- quad_layers.c: boundary layers ---- */
+
+/* grade[e]: bit 1 graded from n0, bit 2 from n1. */
+void qm_bl_grading(const sq_layout *L, const sq_face_info *info, const sq_mesher_options *o,
+                   int *grade);
+/* Thickness of nb geometric layers. */
+double qm_bl_thickness(const sq_mesher_options *o, int nb);
+/* Arc-length fractions f[0..n] of an edge with n segments, graded. */
+void qm_edge_fractions(double len, int n, int grade, const sq_mesher_options *o, double *f);
+/* The layers' vertices put at their heights along the walls' normals. */
+sq_status qm_bl_march(const cad_face *face, const sq_mesher_options *o, qm_vmesh *v,
+                      sq_error *err);
+/* A side from A to B along a wall inside its layer (1: c, s0, s1, d0, d1 filled). */
+int qm_layer_side(const cad_face *face, const sq_mesher_options *o, double thick,
+                  const double A[2], const double B[2], int *c, double *s0, double *s1,
+                  double *d0, double *d1);
+/* *keep (calloc'ed, NULL without layers): 1 at the vertices within the
+ * layers, which keep their grading. */
+sq_status qm_bl_keep(const cad_face *face, const sq_mesher_options *opt, const qm_vmesh *v,
+                     int **keep, sq_error *err);
+
+/* ---- quad_transfinite.c, quad_assemble.c: designs 2 and 3 ---- */
+
+void qm_patch_grid_free(qm_patch_grid *g);
+/* The grids of the layout's patches (grids[npatches]), from the edges'
+ * nodes; their interior vertices numbered from *next_id on; "mesh"
+ * progress per patch. */
+sq_status qm_fill_patches(const sq_layout *L, const qm_edge_nodes *en, const sq_progress *progress,
+                          long *next_id, qm_patch_grid *grids, sq_error *err);
+/* The vertex mesh of layout L with nseg[e] segments per edge (grade and
+ * cum as from qm_bl_grading and qm_size_measure). */
+sq_status qm_assemble(const sq_layout *L, const cad_face *face, const sq_mesher_options *opt,
+                      const int *nseg, const int *grade, const double *cum, qm_vmesh *v,
+                      sq_error *err);
+void qm_vmesh_free(qm_vmesh *v);
+
+/* ---- quad_untangle.c ---- */
+
+/* Every corner triangle of quad q has positive area. */
+int qm_quad_valid(const qm_vmesh *v, int q);
+/* Laplace untangling of the free vertices (keep: vertices held, or NULL). */
+sq_status qm_smooth(const cad_face *face, const sq_face_info *info, qm_vmesh *v, const int *keep,
+                    sq_error *err);
+/* Winslow relaxation (quad_relax.h) with the singular points free or held. */
+sq_status qm_relax(const cad_face *face, const sq_face_info *info, qm_vmesh *v, const int *keep,
+                   int move_singular, const sq_progress *progress, sq_relax_work **work,
+                   int *folded, sq_error *err);
+
+/* ---- quad_raise.c: design 4 ---- */
+
+sq_status qm_raise_order(const cad_face *face, const qm_vmesh *v, int Q, sq_node_kind kind,
+                         const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err);
+
+#endif
