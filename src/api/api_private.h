@@ -58,6 +58,7 @@ struct sq_mesh {
     double *t_write;      /* seconds in sq_mesh_write so far (apart, as t_split) */
     double *xyz, *sjac, *eta;
     int *bnd;
+    int nbl;              /* boundary layers asked for (sq_options.nbl), for the blame */
     double origin[3], xdir[3], ydir[3];
 };
 

@@ -20,7 +20,7 @@ static sq_status mesh_option(int argc, char **argv, int *i, sq_options *o, int *
         strcmp(a, "--method") && strcmp(a, "--singularities") && strcmp(a, "--merge-distance") &&
         strcmp(a, "--bl") && strcmp(a, "--bl-first") && strcmp(a, "--bl-ratio") &&
         strcmp(a, "--bl-layers") && strcmp(a, "--max-quads") && strcmp(a, "--road") &&
-        strcmp(a, "--nodes"))
+        strcmp(a, "--nodes") && strcmp(a, "--min-quality"))
         return sq_cli_unknown("mesh", a, err);
     SQ_TRY(sq_cli_value(argc, argv, i, &val, err));
     if (!strcmp(a, "--order")) return sq_cli_int(a, val, 1, 10, &o->order, err);
@@ -36,6 +36,7 @@ static sq_status mesh_option(int argc, char **argv, int *i, sq_options *o, int *
     if (!strcmp(a, "--bl-ratio")) return sq_cli_double(a, val, 1.0, 10.0, &o->bl_ratio, err);
     if (!strcmp(a, "--bl-layers")) return sq_cli_int(a, val, 1, 1000, &o->bl_layers, err);
     if (!strcmp(a, "--max-quads")) return sq_cli_double(a, val, 1.0, 1e15, &o->max_quads, err);
+    if (!strcmp(a, "--min-quality")) return sq_cli_double(a, val, 0.0, 1.0, &o->min_quality, err);
     if (!strcmp(a, "--method"))
         o->method = val;
     else if (!strcmp(a, "--singularities"))
@@ -79,6 +80,8 @@ sq_status sq_cmd_mesh(int argc, char **argv, sq_error *err)
     if (st == SQ_OK) st = write_outputs(mesh, &args, err);
     char *text = NULL;
     if (st == SQ_OK && !args.quiet) st = sq_cli_print(sq_mesh_describe(mesh, &text, err), &text);
+    /* below the floor: written all the same, then the status */
+    if (st == SQ_OK) st = sq_mesh_check_quality(mesh, &args.opt, err);
     sq_mesh_free(&mesh);
     sq_model_free(&m);
     return st;

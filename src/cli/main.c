@@ -44,8 +44,8 @@ static const char *usage =
     "  mesh FILE [--face N] [--order Q] [--size h] [--field-order P] [--method auto|cg|dg]\n"
     "       [--merge-distance K] [--singularities FILE|natural] [--allow-misaligned]\n"
     "       [--nodes gll|equispaced] [--bl E1,E2,.. --bl-first d --bl-ratio r --bl-layers n]\n"
-    "       [--max-quads N] [--road auto|layout|split] [-o out.msh|out.xml|out.vtu]\n"
-    "       [--svg F] [--report F] [-q]\n"
+    "       [--max-quads N] [--road auto|layout|split] [--min-quality X]\n"
+    "       [-o out.msh|out.xml|out.vtu] [--svg F] [--report F] [-q]\n"
     "      block-structured high-order quad mesh of order Q (1..10, default 4) with\n"
     "      elements of size about h (default sqrt(area)/8, halved up to 3 times while\n"
     "      curved quads fold; --field-order P sets the\n"
@@ -59,6 +59,9 @@ static const char *usage =
     "      layout, patches), the split road (a triangulation split into 3 quads per\n"
     "      triangle: valid on every face, many irregular vertices) or auto (default:\n"
     "      the layout road, the split road where it fails, with a note saying why).\n"
+    "      --min-quality X (default 0.01; 0: none): a mesh whose worst quad has a scaled\n"
+    "      Jacobian (min det J / max det J, proven by Bezier bounds) below X is written,\n"
+    "      then the run exits 8 naming that quad.\n"
     "  layout FILE [--face N] [--order P] [--method auto|cg|dg] [--size H]\n"
     "         [--merge-distance K] [--singularities FILE|natural] [--allow-misaligned]\n"
     "         [-o patches.step] [--svg F] [--report F] [--quiet]\n"
@@ -78,7 +81,8 @@ static const char *usage =
     "  --no-heal            take the faces as read\n"
     "\n"
     "exit status: 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 unsupported\n"
-    "geometry, 5 invalid singularity pattern, 6 no valid layout, 7 output not written.\n";
+    "geometry, 5 invalid singularity pattern, 6 no valid layout, 7 output not written,\n"
+    "8 mesh written but its quality below --min-quality.\n";
 
 int main(int argc, char **argv)
 {
