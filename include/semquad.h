@@ -315,7 +315,8 @@ SQ_API int sq_mesh_num_tags(const sq_mesh *m);
 /* Per-quad quality, nquads values each: the scaled Jacobian (min det J /
  * max |det J| over the whole quad, a lower bound proven by the Bézier
  * coefficients of det J (Johnen, Remacle & Geuzaine 2013), within 2e-6 of
- * the exact value; > 0 for a quad proven valid) and η (1 − max corner
+ * the exact value unless a cap stopped its refinement (the report's
+ * jacobian_capped); > 0 for a quad proven valid) and η (1 − max corner
  * angle deviation from 90° / 90°).  Borrowed. */
 SQ_API const double *sq_mesh_scaled_jacobians(const sq_mesh *m);
 SQ_API const double *sq_mesh_eta(const sq_mesh *m);

@@ -34,9 +34,11 @@ static double bezier_tol(const sq_quad_mesh *m)
     int N = 2 * m->order;
     double c[400], tol = 0.0;
     for (int q = 0; q < m->nquads; q++) {
-        double r = sq_jac_bezier_coefficients(jb, m->xy, &m->conn[q * (m->order + 1) * (m->order + 1)], c);
+        double r =
+            sq_jac_bezier_coefficients(jb, m->xy, &m->conn[q * (m->order + 1) * (m->order + 1)], c);
         double jmin = c[0];
-        for (int k = 1; k < N * N; k++) jmin = fmin(jmin, c[k]);
+        for (int k = 1; k < N * N; k++)
+            jmin = fmin(jmin, c[k]);
         tol = fmax(tol, 2.0 * r / jmin);
     }
     sq_jac_bezier_free(&jb);
@@ -94,7 +96,8 @@ static int check_parallelogram(int Q, sq_node_kind kind)
     f += sq_check_abs(ctx, "eta min", q.eta_min, 2.0 / 3.0, 1e-13);
     f += sq_check_abs(ctx, "eta curved mean", q.eta_curved_mean, 2.0 / 3.0, 1e-10);
     f += sq_check_abs(ctx, "tau %", q.tau_percent, 0.0, 0.0);
-    f += sq_check_abs(ctx, "min scaled Jacobian (affine)", q.min_scaled_jacobian, 1.0, bezier_tol(m));
+    f += sq_check_abs(ctx, "min scaled Jacobian (affine)", q.min_scaled_jacobian, 1.0,
+                      bezier_tol(m));
     f += sq_check_abs(ctx, "min scaled Jacobian (affine, nodes)", q.min_scaled_jacobian_nodes, 1.0,
                       1e-11);
     f += sq_check_abs(ctx, "area", q.area, sin(alpha), 1e-12);

@@ -80,7 +80,8 @@ static int check_bounds(const char *ctx, const sq_quad_mesh *m, int *valid, int 
             double J = d[0] * d[3] - d[1] * d[2];
             smin = fmin(smin, J), smax = fmax(smax, J);
             xmax = fmax(xmax, fmax(fabs(x[0]), fabs(x[1])));
-            for (int k = 0; k < 4; k++) dmax = fmax(dmax, fabs(d[k]));
+            for (int k = 0; k < 4; k++)
+                dmax = fmax(dmax, fabs(d[k]));
         }
     const double U = 0.5 * DBL_EPSILON, lambda = 2.0;
     double eval = 4.0 * (Q + 1) * (Q + 1) * Q * Q * lambda * lambda * U * xmax * dmax;

@@ -275,7 +275,8 @@ static void blame(const sq_mesh *h, int q, char *buf, size_t n)
     else
         len += snprintf(buf + len, n - (size_t)len, ", inside the face");
     if (len < 0 || (size_t)len >= n) return;
-    snprintf(buf + len, n - (size_t)len, ", %s", h->nbl ? "with boundary layers" : "no boundary layers");
+    snprintf(buf + len, n - (size_t)len, ", %s",
+             h->nbl ? "with boundary layers" : "no boundary layers");
 }
 
 sq_status sq_mesh_check_quality(const sq_mesh *m, const sq_options *o, sq_error *err)

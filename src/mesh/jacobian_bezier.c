@@ -26,8 +26,8 @@ struct sq_jac_bezier {
     double lebesgue;                         /* max_i sum_a |to_bern[i][a]| */
     int npatch, cap;                         /* sub-patches made, room for */
     patch *patches;
-    double *pool;                            /* cap * (2Q)^2 coefficients */
-    double half[2][MAXN * MAXN];             /* the two halves of a cut in u */
+    double *pool;                /* cap * (2Q)^2 coefficients */
+    double half[2][MAXN * MAXN]; /* the two halves of a cut in u */
 };
 
 double sq_jac_ratio(const sq_jac_bounds *b)
@@ -51,7 +51,8 @@ static sq_status lagrange_to_bernstein(sq_jac_bezier *jb, const sq_quad_basis *b
     int n = jb->order + 1;
     lapack_int ipiv[MAXQ + 1];
     for (int a = 0; a < n; a++)
-        for (int k = 0; k < n; k++) jb->to_bern[a * n + k] = bernstein(jb, n - 1, k, b->t[a]);
+        for (int k = 0; k < n; k++)
+            jb->to_bern[a * n + k] = bernstein(jb, n - 1, k, b->t[a]);
     lapack_int info = LAPACKE_dgetrf(LAPACK_ROW_MAJOR, n, n, jb->to_bern, n, ipiv);
     if (info == 0) info = LAPACKE_dgetri(LAPACK_ROW_MAJOR, n, jb->to_bern, n, ipiv);
     if (info != 0)
@@ -59,7 +60,8 @@ static sq_status lagrange_to_bernstein(sq_jac_bezier *jb, const sq_quad_basis *b
                        jb->order);
     for (int i = 0; i < n; i++) {
         double row = 0.0;
-        for (int a = 0; a < n; a++) row += fabs(jb->to_bern[i * n + a]);
+        for (int a = 0; a < n; a++)
+            row += fabs(jb->to_bern[i * n + a]);
         jb->lebesgue = fmax(jb->lebesgue, row);
     }
     return SQ_OK;
@@ -69,7 +71,8 @@ sq_status sq_jac_bezier_create(int order, sq_node_kind nodes, sq_jac_bezier **ou
 {
     *out = NULL;
     if (order < 1 || order > MAXQ)
-        return SQ_FAIL(err, SQ_ERR_USAGE, "Jacobian bounds of order %d: expects 1..%d", order, MAXQ);
+        return SQ_FAIL(err, SQ_ERR_USAGE, "Jacobian bounds of order %d: expects 1..%d", order,
+                       MAXQ);
     sq_quad_basis b;
     SQ_TRY(sq_quad_basis_init(&b, order, nodes, err));
     sq_jac_bezier *jb = calloc(1, sizeof *jb);
@@ -123,7 +126,8 @@ static void bernstein_of(const sq_jac_bezier *jb, const double *xy, const int *n
     for (int j = 0; j < n; j++) /* along v */
         for (int i = 0; i < n; i++) {
             double s = 0.0;
-            for (int b = 0; b < n; b++) s += jb->to_bern[j * n + b] * t[b * n + i];
+            for (int b = 0; b < n; b++)
+                s += jb->to_bern[j * n + b] * t[b * n + i];
             X[j * n + i] = s;
         }
 }
@@ -160,7 +164,8 @@ static void scaled_product(const double *F, int fu, int fv, const double *G, int
         for (int i = 0; i <= fu; i++) {
             double f = sign * F[j * (fu + 1) + i];
             for (int l = 0; l <= gv; l++)
-                for (int k = 0; k <= gu; k++) H[(j + l) * N + i + k] += f * G[l * (gu + 1) + k];
+                for (int k = 0; k <= gu; k++)
+                    H[(j + l) * N + i + k] += f * G[l * (gu + 1) + k];
         }
 }
 
@@ -181,7 +186,8 @@ static double roundoff(const sq_jac_bezier *jb, double d, double F)
     int Q = jb->order;
     double lam2 = jb->lebesgue * jb->lebesgue;
     return U * F *
-           (8.0 * Q * (2 * Q + 3) * lam2 * d + (4.0 * Q * (Q + 1) + 28 + 4.0 * Q * SQ_JAC_MAX_DEPTH) * F);
+           (8.0 * Q * (2 * Q + 3) * lam2 * d +
+            (4.0 * Q * (Q + 1) + 28 + 4.0 * Q * SQ_JAC_MAX_DEPTH) * F);
 }
 
 double sq_jac_bezier_coefficients(const sq_jac_bezier *jb, const double *xy, const int *node,
@@ -204,7 +210,8 @@ double sq_jac_bezier_coefficients(const sq_jac_bezier *jb, const double *xy, con
     scaled_product(xu, Q - 1, Q, yv, Q, Q - 1, 1.0, c);
     scaled_product(xv, Q, Q - 1, yu, Q - 1, Q, -1.0, c);
     for (int q = 0; q < N; q++)
-        for (int p = 0; p < N; p++) c[q * N + p] /= jb->binom[N - 1][p] * jb->binom[N - 1][q];
+        for (int p = 0; p < N; p++)
+            c[q * N + p] /= jb->binom[N - 1][p] * jb->binom[N - 1][q];
     return roundoff(jb, d, F);
 }
 
@@ -213,11 +220,13 @@ double sq_jac_bezier_coefficients(const sq_jac_bezier *jb, const double *xy, con
 static void split_half(const double *c, int n, int s, double *lo, double *hi)
 {
     double w[MAXN] = {0};
-    for (int k = 0; k <= n; k++) w[k] = c[k * s];
+    for (int k = 0; k <= n; k++)
+        w[k] = c[k * s];
     lo[0] = w[0];
     hi[n * s] = w[n];
     for (int r = 1; r <= n; r++) {
-        for (int k = 0; k <= n - r; k++) w[k] = 0.5 * (w[k] + w[k + 1]);
+        for (int k = 0; k <= n - r; k++)
+            w[k] = 0.5 * (w[k] + w[k + 1]);
         lo[r * s] = w[0];
         hi[(n - r) * s] = w[n - r];
     }
@@ -240,7 +249,8 @@ static void add_patch(sq_jac_bezier *jb, int slot, double u0, double v0, double 
     patch *p = &jb->patches[slot];
     p->u0 = u0, p->v0 = v0, p->h = h, p->depth = depth, p->slot = slot;
     p->lo = p->hi = c[0];
-    for (int k = 1; k < N * N; k++) p->lo = fmin(p->lo, c[k]), p->hi = fmax(p->hi, c[k]);
+    for (int k = 1; k < N * N; k++)
+        p->lo = fmin(p->lo, c[k]), p->hi = fmax(p->hi, c[k]);
     const int corner[4][2] = {{0, 0}, {1, 0}, {0, 1}, {1, 1}};
     for (int k = 0; k < 4; k++) {
         double v = c[corner[k][1] * n * N + corner[k][0] * n];
@@ -255,7 +265,8 @@ static sq_status reserve(sq_jac_bezier *jb, int more, sq_error *err)
 {
     if (jb->npatch + more <= jb->cap) return SQ_OK;
     int cap = jb->cap ? 2 * jb->cap : 16;
-    while (cap < jb->npatch + more) cap *= 2;
+    while (cap < jb->npatch + more)
+        cap *= 2;
     size_t N = 2 * (size_t)jb->order;
     patch *p = realloc(jb->patches, (size_t)cap * sizeof *p);
     if (p) jb->patches = p;
@@ -275,8 +286,10 @@ static sq_status cut(sq_jac_bezier *jb, int k, sq_jac_bounds *b, sq_error *err)
     patch p = jb->patches[k];
     const double *c = coeffs(jb, k);
     double *L = jb->half[0], *R = jb->half[1];
-    for (int j = 0; j < N; j++) split_half(&c[j * N], n, 1, &L[j * N], &R[j * N]);
-    int slot[4] = {k, jb->npatch, jb->npatch + 1, jb->npatch + 2}; /* (u, v): lo-lo, hi-lo, lo-hi, hi-hi */
+    for (int j = 0; j < N; j++)
+        split_half(&c[j * N], n, 1, &L[j * N], &R[j * N]);
+    int slot[4] = {k, jb->npatch, jb->npatch + 1,
+                   jb->npatch + 2}; /* (u, v): lo-lo, hi-lo, lo-hi, hi-hi */
     jb->npatch += 3;
     for (int i = 0; i < N; i++) {
         split_half(&L[i], n, N, &coeffs(jb, slot[0])[i], &coeffs(jb, slot[2])[i]);
@@ -309,8 +322,8 @@ sq_status sq_jac_bezier_bounds(sq_jac_bezier *jb, const double *xy, const int *n
         b->max_up = jb->patches[z].hi;
         /* no sharper than the round-off of the coefficients */
         double tol = fmax(SQ_JAC_TOL * fmax(fabs(b->min_up), fabs(b->max_lo)), 2.0 * b->roundoff);
-        int min_ok = (b->min_lo > b->roundoff || b->min_up <= b->roundoff) &&
-                     b->min_up - b->min_lo <= tol;
+        int min_ok =
+            (b->min_lo > b->roundoff || b->min_up <= b->roundoff) && b->min_up - b->min_lo <= tol;
         int max_ok = b->max_up - b->max_lo <= tol;
         if (min_ok && max_ok) break;
         int k = min_ok ? z : a;

@@ -46,10 +46,10 @@
 
 /* Bounds of det J of one quad, in the map of [0,1]^2 (quad_mesh.h). */
 typedef struct {
-    double min_lo;   /* proven: det J >= min_lo everywhere on the quad */
-    double min_up;   /* the least value of det J found (det J at (u_min, v_min)) */
-    double max_lo;   /* the largest value of det J found */
-    double max_up;   /* proven: det J <= max_up everywhere */
+    double min_lo; /* proven: det J >= min_lo everywhere on the quad */
+    double min_up; /* the least value of det J found (det J at (u_min, v_min)) */
+    double max_lo; /* the largest value of det J found */
+    double max_up; /* proven: det J <= max_up everywhere */
     double u_min, v_min;
     double roundoff; /* bound of the round-off of every coefficient (absolute) */
     int splits;      /* de Casteljau cuts made */

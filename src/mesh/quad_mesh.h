@@ -47,11 +47,11 @@ static inline int sq_quad_node(int Q, int i, int j) { return j * (Q + 1) + i; }
  * (jacobian_bezier.h, Johnen 2013). */
 typedef struct {
     double eta_mean, eta_min, tau_percent; /* tau: % of quads with eta > 0.9 */
-    double min_scaled_jacobian;       /* least per-quad bound (sq_jac_ratio) */
-    double min_scaled_jacobian_nodes; /* the same ratio of det J at the nodes only */
-    int worst_quad;                   /* the quad of min_scaled_jacobian */
-    double worst_xy[2];               /* its centre, x(1/2, 1/2) */
-    int jacobian_capped;              /* quads whose bounds a cap left unsharp */
+    double min_scaled_jacobian;            /* least per-quad bound (sq_jac_ratio) */
+    double min_scaled_jacobian_nodes;      /* the same ratio of det J at the nodes only */
+    int worst_quad;                        /* the quad of min_scaled_jacobian */
+    double worst_xy[2];                    /* its centre, x(1/2, 1/2) */
+    int jacobian_capped;                   /* quads whose bounds a cap left unsharp */
     int irregular_interior; /* interior vertices with valence != 4 */
     int irregular_boundary; /* boundary vertices with valence != 2 other than corners */
     /* eta_mean, eta_min and tau_percent (and the per-quad eta) are measured

@@ -209,8 +209,7 @@ sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,
     unsigned long long *keys = malloc(4 * (size_t)nq * sizeof *keys);
     sq_jac_bezier *jb = NULL;
     sq_status st = SQ_OK;
-    if (!valence || !angsum || !bnd || !keys)
-        st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (!valence || !angsum || !bnd || !keys) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK) st = sq_jac_bezier_create(Q, m->nodes, &jb, err);
     double eta_sum = 0.0, etac_sum = 0.0, eta_min = HUGE_VAL, etac_min = HUGE_VAL;
     double sj_min = HUGE_VAL, sjn_min = HUGE_VAL, area = 0.0;
