@@ -40,6 +40,7 @@ const char *sq_status_name(sq_status code)
     case SQ_ERR_PATTERN: return "invalid singularity pattern";
     case SQ_ERR_LAYOUT: return "no valid layout";
     case SQ_ERR_OUTPUT: return "output error";
+    case SQ_ERR_QUALITY: return "quality below the floor";
     }
     return "unknown error";
 }

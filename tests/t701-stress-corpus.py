@@ -5,8 +5,9 @@ The faces are written by bench/stress_corpus.py itself, seed 1, so every clone
 meshes the same faces (face i depends on the seed and i only).  The subset: the
 first two faces of each class (many_sided excepted: none is fast) that took under
 3 s (debug build) in the full benchmark, whatever their outcome then.  A valid face must mesh at the default size:
-exit 0, every scaled Jacobian > 0 (the report's min_scaled_jacobian, a positive
-number, no inverted quad) and the interior irregular vertices reported.  A face of
+exit 0 (exit 8, the mesh written, for the faces of BELOW_FLOOR), every scaled
+Jacobian > 0 (the report's min_scaled_jacobian, a positive number, no inverted
+quad) and the interior irregular vertices reported.  A face of
 class `invalid` (not a face at all: its loops cross) must be refused: exit 4, one
 line on stderr, no mesh file.  No tolerance is involved: the checks are signs and
 exit statuses.
@@ -57,6 +58,14 @@ LAYOUT_GIVES_WAY = {
     37: "layout: a 3-corner patch left",
     8: "relaxation: quads with a non-positive Jacobian (near-tangent hole)",
 }
+# valid faces whose mesh at the default size has a worst quad below the default
+# quality floor (0.01, include/semquad.h): written, then exit 8 (issue 21),
+# with the worst scaled Jacobian by Bézier bounds measured 2026-11-26; a
+# listed face that reaches the floor is reported, so that the list only shrinks
+BELOW_FLOOR = {
+    56: "near-tangent hole: 1.1e-5",
+    100: "fillet: 3.5e-3",
+}
 # a face that hangs fails the test instead of the whole suite waiting for it
 FACE_TIMEOUT = 120
 # .ci/run's sanitized build (ASAN_OPTIONS set) runs several times slower; the
@@ -75,7 +84,7 @@ def check(e, tmp):
         return "no answer after %d s" % FACE_TIMEOUT, None
     err = [ln for ln in p.stderr.splitlines() if ln.strip()]
     last = err[-1] if err else ""
-    road = json.load(open(rep)).get("road") if p.returncode == 0 else None
+    road = json.load(open(rep)).get("road") if p.returncode in (0, 8) else None
     return outcome(e, p, err, last, msh, rep), road
 
 
@@ -89,8 +98,11 @@ def outcome(e, p, err, last, msh, rep):
         if os.path.exists(msh):
             return "refused but wrote %s" % msh
         return None
-    if p.returncode != 0:
-        return "exit %d, expected 0: %s" % (p.returncode, last)
+    want = 8 if e["id"] in BELOW_FLOOR else 0
+    if p.returncode != want:
+        return "exit %d, expected %d: %s" % (p.returncode, want, last)
+    if want == 8 and not (os.path.exists(msh) and "worst quad" in last):
+        return "exit 8 without the mesh written or the worst quad named: %s" % last
     m = json.load(open(rep))["mesh"]
     if not m.get("min_scaled_jacobian", 0) > 0 or m.get("inverted") != 0:
         return "min scaled Jacobian %s, %s inverted, expected > 0 and 0" % (

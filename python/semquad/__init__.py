@@ -25,7 +25,8 @@ __all__ = ["Error", "Model", "Face", "Mesh", "open", "version", "gmsh_order"]
 class Error(Exception):
     """A semquad failure: .status is the C status (the `semquad` command's
     exit status: 1 internal, 2 usage, 3 input, 4 geometry, 5 pattern,
-    6 layout, 7 output), str() semquad's one-line message."""
+    6 layout, 7 output, 8 quality below the floor), str() semquad's
+    one-line message."""
 
     def __init__(self, status, message):
         super().__init__(message)
@@ -56,6 +57,7 @@ class _Options(ctypes.Structure):
         ("nodes", ctypes.c_char_p), ("max_quads", ctypes.c_double),
         ("nbl", ctypes.c_int), ("bl_edges", ctypes.POINTER(ctypes.c_int)),
         ("bl_first", ctypes.c_double), ("bl_ratio", ctypes.c_double), ("bl_layers", ctypes.c_int),
+        ("min_quality", ctypes.c_double),
         ("study_solution", ctypes.c_char_p), ("study_methods", ctypes.c_char_p),
         ("study_pmin", ctypes.c_int), ("study_pmax", ctypes.c_int),
         ("study_nsizes", ctypes.c_int), ("study_sizes", ctypes.POINTER(ctypes.c_double)),
@@ -102,7 +104,7 @@ def _load():
         "sq_mesh_scaled_jacobians": (ctypes.POINTER(D), [P]),
         "sq_mesh_eta": (ctypes.POINTER(D), [P]),
         "sq_mesh_report": (I, [P, PP, E]), "sq_mesh_describe": (I, [P, PP, E]),
-        "sq_mesh_write": (I, [P, S, E]),
+        "sq_mesh_write": (I, [P, S, E]), "sq_mesh_check_quality": (I, [P, O, E]),
         "sq_face_field": (I, [P, I, O, PP, E]), "sq_field_free": (None, [PP]),
         "sq_field_num_singular_points": (I, [P]),
         "sq_field_singular_xy": (ctypes.POINTER(D), [P]),
@@ -444,6 +446,16 @@ class Mesh(_Handle):
     def describe(self):
         """The command's one-line summary ("320 quads, order 4, ...")."""
         return self._text(_lib.sq_mesh_describe).rstrip("\n")
+
+    def check_quality(self, min_quality=None):
+        """Raise Error with status 8 (naming the worst quad and what made
+        it) if the worst scaled Jacobian is below min_quality (None: the
+        library's default floor; 0: none), as `semquad mesh --min-quality`
+        does after writing its outputs."""
+        o, keep = _options(min_quality=min_quality)
+        err = _Error()
+        _check(_lib.sq_mesh_check_quality(self._handle(), ctypes.byref(o), ctypes.byref(err)), err)
+        del keep
 
     def write(self, path):
         """Write .msh (Gmsh MSH 4.1, equispaced nodes), .xml (Nektar++),

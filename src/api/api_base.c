@@ -33,6 +33,7 @@ void sq_options_init(sq_options *o)
     o->nodes = "gll";
     o->max_quads = SQ_MAX_QUADS;
     o->bl_ratio = 1.2;
+    o->min_quality = SQ_MIN_QUALITY;
 }
 
 const sq_options *sq_api_options(const sq_options *o, sq_options *def)
@@ -135,6 +136,8 @@ sq_status sq_api_mesher_options(const sq_options *o, sq_mesher_options *mo, sq_e
     mo->bl_layers = o->bl_layers;
     if (mo->nbl > 0 && (!(mo->bl_first > 0.0) || mo->bl_layers < 1))
         return SQ_FAIL(err, SQ_ERR_USAGE, "--bl needs --bl-first d > 0 and --bl-layers n >= 1");
+    if (!(o->min_quality >= 0.0 && o->min_quality <= 1.0))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--min-quality %g: expects 0..1", o->min_quality);
     return SQ_OK;
 }
 

@@ -59,6 +59,7 @@ struct sq_mesh {
     sq_progress progress; /* the caller's, for the "write" events */
     double *xyz, *sjac, *eta;
     int *bnd;
+    int nbl;              /* boundary layers asked for (sq_options.nbl), for the blame */
     double origin[3], xdir[3], ydir[3];
 };
 

@@ -253,8 +253,48 @@ sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_
         return st;
     }
     sq_api_log(o, SQ_LOG_INFO, "meshed (%.3f s)", h->t.mesh);
+    h->nbl = o->nbl;
     *out = h;
     return SQ_OK;
+}
+
+/* What made quad q, for the stage to blame: the road and its patch (the
+ * layout road) or triangle block (the split road), the CAD edge under one
+ * of its sides (a curve that bends too much for the size), and boundary
+ * layers. */
+static void blame(const sq_mesh *h, int q, char *buf, size_t n)
+{
+    const sq_quad_mesh *m = h->q;
+    int edge = -1;
+    for (int s = 0; s < m->nbnd && edge < 0; s++)
+        if (m->bnd_quad[s] == q) edge = m->bnd_tag[s];
+    int len = snprintf(buf, n, "made by the %s road (%s %d)", h->road.name,
+                       strcmp(h->road.name, "split") ? "patch" : "block", m->patch[q]);
+    if (len < 0 || (size_t)len >= n) return;
+    if (edge >= 0)
+        len += snprintf(buf + len, n - (size_t)len, ", on CAD edge %d", edge);
+    else
+        len += snprintf(buf + len, n - (size_t)len, ", inside the face");
+    if (len < 0 || (size_t)len >= n) return;
+    snprintf(buf + len, n - (size_t)len, ", %s",
+             h->nbl ? "with boundary layers" : "no boundary layers");
+}
+
+sq_status sq_mesh_check_quality(const sq_mesh *m, const sq_options *o, sq_error *err)
+{
+    sq_options def;
+    o = sq_api_options(o, &def);
+    if (!(o->min_quality >= 0.0 && o->min_quality <= 1.0))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--min-quality %g: expects 0..1", o->min_quality);
+    const sq_quad_quality *q = &m->quality;
+    if (o->min_quality == 0.0 || q->min_scaled_jacobian >= o->min_quality) return SQ_OK;
+    char why[256];
+    blame(m, q->worst_quad, why, sizeof why);
+    return SQ_FAIL(err, SQ_ERR_QUALITY,
+                   "worst quad %d, centre (%.6g, %.6g), has scaled Jacobian %.3g < --min-quality "
+                   "%g; %s; a smaller --size refines it, --min-quality 0 accepts it",
+                   q->worst_quad, q->worst_xy[0], q->worst_xy[1], q->min_scaled_jacobian,
+                   o->min_quality, why);
 }
 
 void sq_mesh_free(sq_mesh **m)

@@ -99,6 +99,7 @@ void sq_cli_overview(void)
           "refused) or, as -, to standard output; mesh without -o writes STEM.msh here.\n"
           "\n"
           "exit status: 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 unsupported\n"
-          "geometry, 5 invalid singularity pattern, 6 no valid layout, 7 output not written.\n",
+          "geometry, 5 invalid singularity pattern, 6 no valid layout, 7 output not written,\n"
+          "8 mesh written but its quality below --min-quality.\n",
           stdout);
 }

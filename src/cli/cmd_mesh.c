@@ -62,6 +62,8 @@ static sq_status run_mesh(sq_cli_args *a, sq_error *err)
     if (st == SQ_OK) st = write_outputs(mesh, a, named, err);
     char *text = NULL;
     if (st == SQ_OK && !a->quiet) st = sq_cli_print(sq_mesh_describe(mesh, &text, err), &text, a);
+    /* below the floor: written all the same, then the status */
+    if (st == SQ_OK) st = sq_mesh_check_quality(mesh, &a->opt, err);
     sq_mesh_free(&mesh);
     sq_model_free(&m);
     return st;
@@ -106,6 +108,10 @@ static const sq_cli_opt mesh_opts[] = {
      .help = "layout: field, layout, patches; split: triangles split into quads; auto: layout, "
              "else split",
      .target = SQ_CLI_AT(opt.road)},
+    {.name = "min-quality", .kind = SQ_CLI_REAL, .value = "X", .lo = 0.0, .hi = 1.0, .def = "0.01",
+     .help = "a mesh whose worst quad's scaled Jacobian (min det J / max det J, proven by Bezier "
+             "bounds) is below X is written, then the run exits 8 naming that quad; 0: no floor",
+     .target = SQ_CLI_AT(opt.min_quality)},
     SQ_CLI_OPT_SVG("a picture of the mesh, coloured by quality"),
     SQ_CLI_OPT_REPORT,
     SQ_CLI_OPT_PROGRESS,

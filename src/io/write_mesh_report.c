@@ -50,6 +50,15 @@ void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, i
     sq_json_key_number(&j, "above_0_9_percent", q->tau_curved_percent);
     sq_json_end_object(&j);
     sq_json_key_number(&j, "min_scaled_jacobian", q->min_scaled_jacobian);
+    sq_json_key_number(&j, "min_scaled_jacobian_nodes", q->min_scaled_jacobian_nodes);
+    sq_json_key_int(&j, "jacobian_capped", q->jacobian_capped);
+    sq_json_key(&j, "worst_quad");
+    sq_json_begin_object(&j);
+    sq_json_key_int(&j, "index", q->worst_quad);
+    sq_json_key_number(&j, "x", q->worst_xy[0]);
+    sq_json_key_number(&j, "y", q->worst_xy[1]);
+    sq_json_key_number(&j, "scaled_jacobian", q->min_scaled_jacobian);
+    sq_json_end_object(&j);
     sq_json_key_int(&j, "inverted", q->inverted);
     sq_json_key_number(&j, "area", q->area);
     sq_json_end_object(&j);

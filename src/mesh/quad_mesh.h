@@ -42,10 +42,16 @@ static inline int sq_quad_node(int Q, int i, int j) { return j * (Q + 1) + i; }
 
 /* Quality (docs/conventions.md, Jezdimirović 2021 Table 1): per quad,
  * eta = 1 - max_k |alpha_k - π/2| / (π/2) over the four corner angles, and
- * the scaled Jacobian min det J / max det J over the element's nodes. */
+ * the scaled Jacobian min det J / max |det J| over the whole element, a
+ * proven lower bound from the Bézier coefficients of det J
+ * (jacobian_bezier.h, Johnen 2013). */
 typedef struct {
     double eta_mean, eta_min, tau_percent; /* tau: % of quads with eta > 0.9 */
-    double min_scaled_jacobian;
+    double min_scaled_jacobian;            /* least per-quad bound (sq_jac_ratio) */
+    double min_scaled_jacobian_nodes;      /* the same ratio of det J at the nodes only */
+    int worst_quad;                        /* the quad of min_scaled_jacobian */
+    double worst_xy[2];                    /* its centre, x(1/2, 1/2) */
+    int jacobian_capped;                   /* quads whose bounds a cap left unsharp */
     int irregular_interior; /* interior vertices with valence != 4 */
     int irregular_boundary; /* boundary vertices with valence != 2 other than corners */
     /* eta_mean, eta_min and tau_percent (and the per-quad eta) are measured
@@ -55,7 +61,7 @@ typedef struct {
      * corners (from the element's Lagrange map) are these (docs/formats.md): */
     double eta_curved_mean, eta_curved_min, tau_curved_percent;
     double area;         /* sum over quads of the integral of det J (Gauss, exact) */
-    int inverted;        /* quads with min det J <= 0 at the nodes */
+    int inverted;        /* quads not proven valid: Bézier lower bound of det J <= 0 */
     int vertices;        /* distinct corner vertices */
     int boundary_vertices;
 } sq_quad_quality;

@@ -6,9 +6,12 @@
  * independently, so the report agrees with what a reader of the file finds; the curved variant uses
  * the tangents of the element's sides at its corners, from the derivative
  * of its Lagrange map.  Scaled Jacobian: min det J / max |det J| over the
- * element's (Q+1)^2 nodes.  Area: Gauss–Legendre with Q+1 points per
+ * whole element, bounded by the Bézier coefficients of det J
+ * (jacobian_bezier.h, Johnen 2013), and, for comparison, over the
+ * element's (Q+1)^2 nodes only.  Area: Gauss–Legendre with Q+1 points per
  * direction, exact for the polynomial map (det J has degree 2Q-1 in each
  * variable). */
+#include "jacobian_bezier.h"
 #include "quad_mesh.h"
 
 #include "gauss.h"
@@ -148,6 +151,32 @@ sq_status sq_quad_mesh_eta_curved(const sq_quad_mesh *m, double *eta_curved, sq_
     return SQ_OK;
 }
 
+/* The scaled Jacobian of quad q by the Bézier bounds of its det J (the
+ * per-quad value, *valid if they prove det J > 0) and by det J at its nodes
+ * (*at_nodes). */
+static sq_status quad_jacobian(const sq_quad_mesh *m, const double *D, sq_jac_bezier *jb, int q,
+                               double *ratio, double *at_nodes, int *valid, int *capped,
+                               sq_error *err)
+{
+    int Q = m->order;
+    double jmin = HUGE_VAL, jmax = 0.0;
+    for (int j = 0; j <= Q; j++)
+        for (int i = 0; i <= Q; i++) {
+            double d[4];
+            node_deriv(m, D, q, i, j, d);
+            double dj = d[0] * d[3] - d[1] * d[2];
+            jmin = fmin(jmin, dj);
+            jmax = fmax(jmax, fabs(dj));
+        }
+    *at_nodes = jmax > 0.0 ? jmin / jmax : -1.0;
+    sq_jac_bounds bd;
+    SQ_TRY(sq_jac_bezier_bounds(jb, m->xy, &m->conn[(size_t)q * (Q + 1) * (Q + 1)], &bd, err));
+    *ratio = sq_jac_ratio(&bd);
+    *valid = sq_jac_valid(&bd);
+    *capped += bd.capped;
+    return SQ_OK;
+}
+
 static int cmp_u64(const void *a, const void *b)
 {
     unsigned long long x = *(const unsigned long long *)a, y = *(const unsigned long long *)b;
@@ -178,14 +207,14 @@ sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,
     double *angsum = calloc((size_t)m->nnodes + 1, sizeof *angsum);
     char *bnd = calloc((size_t)m->nnodes + 1, 1);
     unsigned long long *keys = malloc(4 * (size_t)nq * sizeof *keys);
-    if (!valence || !angsum || !bnd || !keys) {
-        free(valence), free(angsum), free(bnd), free(keys);
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    }
+    sq_jac_bezier *jb = NULL;
+    sq_status st = SQ_OK;
+    if (!valence || !angsum || !bnd || !keys) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) st = sq_jac_bezier_create(Q, m->nodes, &jb, err);
     double eta_sum = 0.0, etac_sum = 0.0, eta_min = HUGE_VAL, etac_min = HUGE_VAL;
-    double sj_min = HUGE_VAL, area = 0.0;
+    double sj_min = HUGE_VAL, sjn_min = HUGE_VAL, area = 0.0;
     int n_tau = 0, n_tauc = 0, inverted = 0;
-    for (int q = 0; q < nq; q++) {
+    for (int q = 0; q < nq && st == SQ_OK; q++) {
         const int *c = &m->conn[(size_t)q * npe];
         double ang[4], angc[4];
         straight_angles(m, q, orient, ang);
@@ -199,20 +228,13 @@ sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,
         etac_min = fmin(etac_min, ec);
         n_tau += e > 0.9;
         n_tauc += ec > 0.9;
-        /* scaled Jacobian over the nodes */
-        double jmin = HUGE_VAL, jmax = 0.0;
-        for (int j = 0; j <= Q; j++)
-            for (int i = 0; i <= Q; i++) {
-                double d[4];
-                node_deriv(m, D, q, i, j, d);
-                double dj = d[0] * d[3] - d[1] * d[2];
-                jmin = fmin(jmin, dj);
-                jmax = fmax(jmax, fabs(dj));
-            }
-        double s = jmax > 0.0 ? jmin / jmax : -1.0;
+        double s = -1.0, sn = -1.0;
+        int valid = 0;
+        st = quad_jacobian(m, D, jb, q, &s, &sn, &valid, &qq->jacobian_capped, err);
         if (sjac) sjac[q] = s;
-        sj_min = fmin(sj_min, s);
-        inverted += jmin <= 0.0;
+        if (s < sj_min) sj_min = s, qq->worst_quad = q;
+        sjn_min = fmin(sjn_min, sn);
+        inverted += !valid;
         /* area by Gauss quadrature of det J */
         for (int pv = 0; pv < ng; pv++)
             for (int pu = 0; pu < ng; pu++) {
@@ -237,6 +259,11 @@ sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,
             unsigned long long lo = (unsigned)(v < w ? v : w), hi = (unsigned)(v < w ? w : v);
             keys[4 * (size_t)q + k] = lo << 32 | hi;
         }
+    }
+    sq_jac_bezier_free(&jb);
+    if (st != SQ_OK) {
+        free(valence), free(angsum), free(bnd), free(keys);
+        return st;
     }
     /* edges used once are boundary edges (quadstats.py) */
     size_t ne = 4 * (size_t)nq;
@@ -270,6 +297,8 @@ sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,
     qq->eta_curved_min = etac_min;
     qq->tau_curved_percent = 100.0 * n_tauc / nq;
     qq->min_scaled_jacobian = sj_min;
+    qq->min_scaled_jacobian_nodes = sjn_min;
+    sq_quad_mesh_map(m, &b, qq->worst_quad, 0.5, 0.5, qq->worst_xy, NULL);
     qq->area = area;
     qq->inverted = inverted;
     free(valence);
