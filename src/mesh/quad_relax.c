@@ -12,11 +12,14 @@
 #define MAX_DOUBLINGS 4
 #define MAX_PARABOLA_STEP 16.0 /* longest step from the parabola */
 #define CONVERGED 1e-9
+#define STALL_DROP 1e-9
 #define PCG_RTOL 5e-2
 #define PCG_MAXIT 6
 #define DOUBLE_RHO 1.1
 #define WORST_ETA 0.55
 #define WORST_SWEEPS 50
+#define FIRST_STEP 0.25       /* of the shortest side around the vertex */
+#define LAST_STEP (1.0 / 256.0) /* the last step tried: above this */
 #define MIN_TAPER 0.3
 #define MAX_STRETCH 5.0
 #define TAU_ETA 0.9
@@ -562,7 +565,13 @@ static int better(int phase, around_quality y, around_quality x)
  * each vertex; phase 1 lifts the quads just below eta = TAU_ETA (the
  * neighbours of quads whose angles a corner or a singular point fixes)
  * without lowering any worst eta.  Each move must improve the quads it
- * touches. */
+ * touches.  The step is a fraction of the shortest side around the vertex,
+ * kept per vertex from one visit to the next as compass search keeps its
+ * step length (Kolda, Lewis and Torczon, SIAM Review 45(3) 2003, Alg. 3.1:
+ * halved after a poll without a better point, doubled up to FIRST_STEP
+ * after a success) rather than restarted at FIRST_STEP: a vertex that keeps
+ * improving by small moves (a thin face's many flat quads, each revisited
+ * after every neighbour's move) then polls 8-16 points, not up to 48 */
 static sq_status compass(const cad_face *face, const sq_relax_mesh *m, relax_work *w, int phase,
                          sq_error *err)
 {
@@ -570,9 +579,16 @@ static sq_status compass(const cad_face *face, const sq_relax_mesh *m, relax_wor
                                      {-1, 0}, {-0.7071, -0.7071}, {0, -1}, {0.7071, -0.7071}};
     /* a vertex is looked at again only after a neighbour moved */
     char *active = malloc((size_t)m->nv + 1);
-    if (!active) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    for (int i = 0; i < m->nv; i++)
+    double *frac = malloc(sizeof(double) * ((size_t)m->nv + 1));
+    if (!active || !frac) {
+        free(active);
+        free(frac);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    for (int i = 0; i < m->nv; i++) {
         active[i] = w->var[i] >= 0;
+        frac[i] = FIRST_STEP;
+    }
     sq_status st = SQ_OK;
     for (int sweep = 0; sweep < WORST_SWEEPS && st == SQ_OK; sweep++) {
         int moved = 0;
@@ -582,7 +598,8 @@ static sq_status compass(const cad_face *face, const sq_relax_mesh *m, relax_wor
             around_quality cur = around(m, w, i);
             if (phase == 0 ? cur.worst >= WORST_ETA : cur.worst >= TAU_ETA) continue;
             double *x = &m->xy[2 * i], x0[2] = {x[0], x[1]}, s0 = w->s[i], len = cur.shortest;
-            for (double h = 0.25 * len; h > len / 256.0 && st == SQ_OK; h *= 0.5) {
+            for (double f = frac[i]; f > LAST_STEP && st == SQ_OK; f *= 0.5) {
+                double h = f * len;
                 around_quality best = cur;
                 double bx[2] = {x0[0], x0[1]}, bs = s0;
                 int ndir = w->edge[i] >= 0 ? 2 : 8;
@@ -603,6 +620,7 @@ static sq_status compass(const cad_face *face, const sq_relax_mesh *m, relax_wor
                 x[0] = bx[0], x[1] = bx[1], w->s[i] = bs;
                 if (better(phase, best, cur)) {
                     moved = 1;
+                    frac[i] = fmin(2.0 * f, FIRST_STEP);
                     for (int t = w->start[i]; t < w->start[i + 1]; t++)
                         for (int k = 0; k < 4; k++) {
                             int v = m->quad[4 * w->around[t] + k];
@@ -615,6 +633,7 @@ static sq_status compass(const cad_face *face, const sq_relax_mesh *m, relax_wor
         if (!moved) break;
     }
     free(active);
+    free(frac);
     return st;
 }
 
@@ -717,6 +736,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
     const double extent = hypot(hi[0] - lo[0], hi[1] - lo[1]);
     if (st == SQ_OK && m->stop_on_fold) st = boundary_folds(face, m, w, held, was, 1, &m->folded, err);
     int fresh = 0;
+    double last_drop = HUGE_VAL;
     for (int it = 0; it < MAX_NEWTON && st == SQ_OK && w->ndof > 0 && E < HUGE_VAL; it++) {
         for (int i = 0; i < m->nv && st == SQ_OK; i++)
             if (w->var[i] >= 0 && w->edge[i] >= 0)
@@ -781,6 +801,19 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
          * the extent, two paths to the same optimum ended in compass
          * results 4e-4 apart in mean eta (triangle.step) */
         int done = moved < CONVERGED * extent || E - E1 < 1e-15 * E;
+        /* or stalled: a decrease below STALL_DROP of the energy and at
+         * least half the step before's is linear convergence (the inexact
+         * directions of a near-symmetry, e.g. a thin ring's vertices drifting
+         * along it: stress 0073 moved 1e-5 of the extent per step for 30
+         * steps while the energy fell by 1e-10 of itself); what is left of a
+         * geometric series of ratio >= 1/2 is at most twice the last term,
+         * below 2 STALL_DROP of the energy.  Of the examples, only annulus and
+         * disc (whose rotations along their circles are such near-symmetries:
+         * decreases falling by 0.3-0.9 per step) stop by this, a few steps
+         * earlier; the compass search after this moves their vertices by
+         * more than those steps would have */
+        done |= E - E1 < STALL_DROP * E && E - E1 >= 0.5 * last_drop;
+        last_drop = E - E1;
         E = E1;
         /* a fold that the relaxation made is not undone by its later steps
          * (naca0012 with its singular points free: from the 3rd step on) */
