@@ -477,30 +477,41 @@ static sq_status place(const cad_face *face, const sq_relax_mesh *m, relax_work 
     return SQ_OK;
 }
 
-/* eta of a counter-clockwise quad (corners c[4], side k from c[k] to
- * c[k+1]) from its corners' cross products det[k] = (c[k+1] - c[k]) x
- * (c[k+3] - c[k]), dot products dot[k] and squared side lengths l[k]: the
- * value of sq_quad_corner_eta (quad_quality.c) clamped at 0, with one atan2
- * instead of four.  eta = 1 - max_k |theta_k - 90 deg| / 90 deg
- * (docs/conventions.md, "Quality"): a quad with a corner of det <= 0 has a
- * corner of 180 deg or more, eta <= 0; in a convex one every theta_k lies in
- * (0, 180 deg), where |theta_k - 90 deg| grows with |cos theta_k| =
- * |dot[k]| / sqrt(l[k] l[k+3]), so the worst corner is found without an
- * angle and only its angle is taken, as quad_quality.c takes it.  This is
- * the compass search's innermost evaluation (8 directions x 6 step lengths
- * x the quads around each vertex, per sweep): its four atan2 were half the
- * time of a 26 000-quad sliver (stress corpus 0073). */
-static double convex_eta(const double det[4], const double dot[4], const double l[4])
+/* The worst corner of a counter-clockwise quad (corners c[4], side k from
+ * c[k] to c[k+1]) by eta, from its corners' cross products det[k] =
+ * (c[k+1] - c[k]) x (c[k+3] - c[k]), dot products dot[k] and squared side
+ * lengths l[k], without an angle: its index, and in *bad its cos^2, or 2
+ * (worse than any convex quad's) when the quad is not convex.  eta = 1 -
+ * max_k |theta_k - 90 deg| / 90 deg (docs/conventions.md, "Quality"): a
+ * quad with a corner of det <= 0 has a corner of 180 deg or more, eta <= 0;
+ * in a convex one every theta_k lies in (0, 180 deg), where |theta_k - 90
+ * deg| grows with cos^2 theta_k = dot[k]^2 / (l[k] l[k+3]).  So quads
+ * compare by *bad, and only the angle that decides is taken (corner_eta):
+ * this is the compass search's innermost evaluation (8 directions x up to 6
+ * step lengths x the quads around each vertex, per sweep), whose four atan2
+ * per quad were half the time of a 26 000-quad sliver (stress corpus 0073). */
+static int worst_corner(const double det[4], const double dot[4], const double l[4], double *bad)
 {
     int worst = 0;
-    double cmax = -1.0;
+    *bad = -1.0;
     for (int k = 0; k < 4; k++) {
-        if (!(det[k] > 0.0)) return 0.0;
+        if (!(det[k] > 0.0)) {
+            *bad = 2.0;
+            return k;
+        }
         double c2 = dot[k] * dot[k] / (l[k] * l[(k + 3) % 4]);
-        if (c2 > cmax) cmax = c2, worst = k;
+        if (c2 > *bad) *bad = c2, worst = k;
     }
-    double deg = 180.0 / M_PI, th = atan2(det[worst], dot[worst]);
-    double eta = 1.0 - fabs(th * deg - 90.0) / 90.0;
+    return worst;
+}
+
+/* eta of a quad whose worst corner (worst_corner) has cross and dot
+ * products det, dot and badness bad: sq_quad_corner_eta's value
+ * (quad_quality.c: the same atan2, in degrees) clamped at 0. */
+static double corner_eta(double det, double dot, double bad)
+{
+    if (bad > 1.0) return 0.0;
+    double deg = 180.0 / M_PI, eta = 1.0 - fabs(atan2(det, dot) * deg - 90.0) / 90.0;
     return eta > 0.0 ? eta : 0.0;
 }
 
@@ -508,18 +519,21 @@ static double convex_eta(const double det[4], const double dot[4], const double 
  * convex), how many are distorted otherwise (corner Jacobians' ratio below
  * MIN_TAPER or sides longer than MAX_STRETCH times the shortest: a move
  * that keeps the angles may still shrink a side), the shortest of their
- * sides, and their score: the sum of min(eta, TAU_ETA), plus a hundredth
- * of the sum of eta to prefer better quads among equal scores.  Minima and
- * maxima by comparison, not fmin/fmax (library calls here, a tenth of the
- * time; no NaN reaches them from a finite mesh). */
+ * sides, and, with score set (compass phase 1, which compares it; phase 0
+ * needs only the worst quad's eta), their score: the sum of min(eta,
+ * TAU_ETA), plus a hundredth of the sum of eta to prefer better quads among
+ * equal scores.  Minima and maxima by comparison, not fmin/fmax (library
+ * calls here, a tenth of the time; no NaN reaches them from a finite
+ * mesh). */
 typedef struct {
     double worst, shortest, score;
     int distorted;
 } around_quality;
 
-static around_quality around(const sq_relax_mesh *m, const relax_work *w, int i)
+static around_quality around(const sq_relax_mesh *m, const relax_work *w, int i, int score)
 {
     around_quality r = {1.0, HUGE_VAL, 0.0, 0};
+    double wbad = -1.0, wdet = 1.0, wdot = 0.0; /* the worst quad's worst corner */
     for (int t = w->start[i]; t < w->start[i + 1]; t++) {
         const int *q = &m->quad[4 * w->around[t]];
         const double *c[4];
@@ -538,14 +552,17 @@ static around_quality around(const sq_relax_mesh *m, const relax_work *w, int i)
             if (l[k] < lmin) lmin = l[k];
             if (l[k] > lmax) lmax = l[k];
         }
-        double shortest = sqrt(lmin);
+        double shortest = sqrt(lmin), bad;
         if (shortest < r.shortest) r.shortest = shortest;
-        double eta = convex_eta(det, dot, l);
         r.distorted +=
             !(dmin / dmax >= MIN_TAPER) || !(lmax <= MAX_STRETCH * MAX_STRETCH * lmin);
-        if (eta < r.worst) r.worst = eta;
+        int k = worst_corner(det, dot, l, &bad);
+        if (bad > wbad) wbad = bad, wdet = det[k], wdot = dot[k];
+        if (!score) continue;
+        double eta = corner_eta(det[k], dot[k], bad);
         r.score += (eta < TAU_ETA ? eta : TAU_ETA) + 0.01 * eta;
     }
+    if (wbad >= 0.0) r.worst = corner_eta(wdet, wdot, wbad);
     return r;
 }
 
@@ -595,7 +612,7 @@ static sq_status compass(const cad_face *face, const sq_relax_mesh *m, relax_wor
         for (int i = 0; i < m->nv && st == SQ_OK; i++) {
             if (!active[i]) continue;
             active[i] = 0;
-            around_quality cur = around(m, w, i);
+            around_quality cur = around(m, w, i, phase);
             if (phase == 0 ? cur.worst >= WORST_ETA : cur.worst >= TAU_ETA) continue;
             double *x = &m->xy[2 * i], x0[2] = {x[0], x[1]}, s0 = w->s[i], len = cur.shortest;
             for (double f = frac[i]; f > LAST_STEP && st == SQ_OK; f *= 0.5) {
@@ -611,7 +628,7 @@ static sq_status compass(const cad_face *face, const sq_relax_mesh *m, relax_wor
                         x[0] = x0[0] + h * DIR[k][0];
                         x[1] = x0[1] + h * DIR[k][1];
                     }
-                    around_quality e = around(m, w, i);
+                    around_quality e = around(m, w, i, phase);
                     if (better(phase, e, best)) {
                         best = e;
                         bx[0] = x[0], bx[1] = x[1], bs = w->s[i];
