@@ -18,7 +18,7 @@
 #define DOUBLE_RHO 1.1
 #define WORST_ETA 0.55
 #define WORST_SWEEPS 50
-#define FIRST_STEP 0.25       /* of the shortest side around the vertex */
+#define FIRST_STEP 0.25         /* of the shortest side around the vertex */
 #define LAST_STEP (1.0 / 256.0) /* the last step tried: above this */
 #define MIN_TAPER 0.3
 #define MAX_STRETCH 5.0
@@ -45,6 +45,9 @@ struct sq_relax_work {
                         * in the Hessian's values (sem_sparse_block_positions) */
     sem_sparse *A;     /* the Hessian, its analysis and last factorization */
     int factored;      /* A has been factored */
+    int steps;         /* the last relaxation's Newton steps */
+    long polls;        /* and its compass search's evaluations of the quads
+                        * around a vertex (sq_relax_work_stats) */
 };
 typedef struct sq_relax_work relax_work;
 
@@ -67,6 +70,12 @@ void sq_relax_work_free(sq_relax_work **pw)
     sem_sparse_free(&w->A);
     free(w);
     *pw = NULL;
+}
+
+void sq_relax_work_stats(const sq_relax_work *w, int *newton_steps, long *polls)
+{
+    *newton_steps = w->steps;
+    *polls = w->polls;
 }
 
 static int cmp_long(const void *a, const void *b)
@@ -554,8 +563,7 @@ static around_quality around(const sq_relax_mesh *m, const relax_work *w, int i,
         }
         double shortest = sqrt(lmin), bad;
         if (shortest < r.shortest) r.shortest = shortest;
-        r.distorted +=
-            !(dmin / dmax >= MIN_TAPER) || !(lmax <= MAX_STRETCH * MAX_STRETCH * lmin);
+        r.distorted += !(dmin / dmax >= MIN_TAPER) || !(lmax <= MAX_STRETCH * MAX_STRETCH * lmin);
         int k = worst_corner(det, dot, l, &bad);
         if (bad > wbad) wbad = bad, wdet = det[k], wdot = dot[k];
         if (!score) continue;
@@ -613,6 +621,7 @@ static sq_status compass(const cad_face *face, const sq_relax_mesh *m, relax_wor
             if (!active[i]) continue;
             active[i] = 0;
             around_quality cur = around(m, w, i, phase);
+            w->polls++;
             if (phase == 0 ? cur.worst >= WORST_ETA : cur.worst >= TAU_ETA) continue;
             double *x = &m->xy[2 * i], x0[2] = {x[0], x[1]}, s0 = w->s[i], len = cur.shortest;
             for (double f = frac[i]; f > LAST_STEP && st == SQ_OK; f *= 0.5) {
@@ -629,6 +638,7 @@ static sq_status compass(const cad_face *face, const sq_relax_mesh *m, relax_wor
                         x[1] = x0[1] + h * DIR[k][1];
                     }
                     around_quality e = around(m, w, i, phase);
+                    w->polls++;
                     if (better(phase, e, best)) {
                         best = e;
                         bx[0] = x[0], bx[1] = x[1], bs = w->s[i];
@@ -729,6 +739,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
         if (keep) *keep = w;
     }
     if (st == SQ_OK) st = begin(face, m, w, err);
+    if (st == SQ_OK) w->steps = 0, w->polls = 0;
     double *d = NULL, *p = NULL, *s0 = NULL, *held = NULL;
     char *was = NULL;
     m->folded = 0;
@@ -763,6 +774,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
         if (st == SQ_OK) st = newton_direction(m, w, fresh, d, &gd, &factored, err);
         if (st != SQ_OK) break;
         fresh = 0;
+        w->steps++;
         memcpy(p, m->xy, sizeof(double) * 2 * (size_t)m->nv);
         memcpy(s0, w->s, sizeof(double) * (size_t)m->nv);
         double t = 1.0, E1 = HUGE_VAL;
