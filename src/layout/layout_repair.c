@@ -22,6 +22,7 @@ typedef struct {
     int nhit, hit_ok; /* valid while hit_ok: the set has not changed */
     int trials;    /* patch repairs tried (try_candidate), up to MAX_TRIALS */
     double work;   /* separatrix points the set-level passes visited (WORK_MAX) */
+    double lwork;  /* segments the repair lines' steps tested (LINE_WORK_MAX) */
 } rctx;
 
 /* The repairs' work bound, in separatrix points visited by the set-level
@@ -31,6 +32,15 @@ typedef struct {
  * line's steps have their own bound.)  A bound on the work, not on the
  * clock, keeps the answer the same on every machine. */
 #define WORK_MAX 1e6
+/* The repair lines' work bound, in segments (separatrix and boundary) their
+ * steps tested: each step tests every one, and a line in a thin patch (a
+ * tiny edge's) steps at MIN_STEP_FRACTION of the default step, so lines
+ * within their step budget could still take minutes (stress corpus 0311, a
+ * 1.7e-6 edge: over 49 s of CPU, 1e10 tests).  About 10 s of one core, as
+ * WORK_MAX (5 ns a test): of the stress corpus's 131 layouts that succeed
+ * (2026-11-26), the most took 1.3e8 (0100), the examples' 1.3e5 (annulus),
+ * T106's none.  A bound on the work, not on the clock, as WORK_MAX. */
+#define LINE_WORK_MAX 2e9
 
 /* Points of the set. */
 static long set_points(const sq_separatrix_set *S)
@@ -214,7 +224,13 @@ static sq_status trace_line(rctx *r, const double p0[2], const double d0[2], dou
     /* the steps a line of maxlen takes at the default step, four times
      * over: small steps in thin patches may not run it out of time */
     const double budget = r->maxlen / r->step;
+    const double per_step = (double)(r->nb + set_points(S));
     for (long nstep = 0; len < r->maxlen && nstep < budget; nstep++) {
+        if ((r->lwork += per_step) > LINE_WORK_MAX)
+            return SQ_FAIL(err, SQ_ERR_LAYOUT,
+                           "repair line from (%g, %g) stopped at the repair lines' work bound "
+                           "(%g segment tests)",
+                           p0[0], p0[1], LINE_WORK_MAX);
         /* a line that runs between separatrices closer than the step (a
          * thin patch along the boundary) steps at half its clearance, so
          * that it follows the field there instead of jumping across */
@@ -1533,7 +1549,7 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
     sq_layout_defects d;
     memset(&d, 0, sizeof d);
     int it;
-    for (it = 0; it < 400 && st == SQ_OK && r.work <= WORK_MAX; it++) {
+    for (it = 0; it < 400 && st == SQ_OK && r.work <= WORK_MAX && r.lwork <= LINE_WORK_MAX; it++) {
         /* set-level repairs first, the graph rebuilt after them; each
          * iteration follows a change of the set */
         int done = 0;
@@ -1574,7 +1590,9 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
             char buf[400];
             sq_layout_defects_summary(&d, buf, sizeof buf);
             st = SQ_FAIL(err, SQ_ERR_LAYOUT, "%s%s", buf,
-                         r.work > WORK_MAX ? " (repairs stopped at their work bound)" : "");
+                         r.work > WORK_MAX || r.lwork > LINE_WORK_MAX
+                             ? " (repairs stopped at their work bound)"
+                             : "");
         }
     } else if (st != SQ_ERR_LAYOUT) {
         sq_layout_free(L);
