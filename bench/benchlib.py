@@ -3,6 +3,7 @@ under a time limit, read its report, group failures, write Markdown."""
 import json
 import os
 import re
+import resource
 import signal
 import subprocess
 import time
@@ -18,6 +19,10 @@ def run_mesh(semquad, step, workdir, tag, timeout, extra=()):
         if os.path.exists(f):
             os.remove(f)
     cmd = [semquad, "mesh", step, "-q", "--report", rep, "-o", msh] + list(extra)
+    # CPU time (user + system) of the children reaped meanwhile: this face's
+    # alone when one face runs at a time (--jobs 1), the figure that means
+    # something on a loaded machine, where wall time is mostly waiting
+    ru0 = resource.getrusage(resource.RUSAGE_CHILDREN)
     t0 = time.perf_counter()
     # a process group of its own, so a timeout kills whatever semquad started
     p = subprocess.Popen(cmd, stdout=subprocess.DEVNULL, stderr=subprocess.PIPE,
@@ -30,10 +35,12 @@ def run_mesh(semquad, step, workdir, tag, timeout, extra=()):
         _, err = p.communicate()
         code = None
     dt = time.perf_counter() - t0
+    ru1 = resource.getrusage(resource.RUSAGE_CHILDREN)
+    cpu = ru1.ru_utime + ru1.ru_stime - ru0.ru_utime - ru0.ru_stime
     lines = [ln for ln in err.decode(errors="replace").splitlines() if ln.strip()]
     # the error is semquad's own line; a library may add lines of its own after it
     mine = [ln for ln in lines if ln.startswith("semquad:")]
-    r = {"exit": code, "seconds": round(dt, 3), "stderr_lines": len(lines),
+    r = {"exit": code, "seconds": round(dt, 3), "cpu_seconds": round(cpu, 3), "stderr_lines": len(lines),
          "stderr": (mine or lines or [""])[-1], "stderr_all": lines[-20:]}
     if code == 0 and os.path.exists(rep):
         r.update(report_figures(rep))
@@ -117,8 +124,8 @@ def percentile(xs, q):
     return xs[lo] + (xs[hi] - xs[lo]) * (k - lo)
 
 
-def time_row(rows):
-    ts = [r["seconds"] for r in rows]
+def time_row(rows, key="seconds"):
+    ts = [r[key] for r in rows]
     return "| %d | %.2f | %.2f | %.2f | %.2f |" % (len(ts), percentile(ts, 0.5), percentile(ts, 0.9),
                                                    percentile(ts, 0.99), max(ts) if ts else float("nan"))
 

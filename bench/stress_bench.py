@@ -13,7 +13,8 @@ exits 0 with every scaled Jacobian > 0, or refuses with exit 4 a face that is no
 (class `invalid`, or marked by the generator as not written as drawn).  Prints Markdown (success rate per class,
 failure classes with examples, time percentiles, irregular-vertex excess); --doc
 replaces (or appends) the section "Stress corpus" of that file.  At most --jobs
-faces at a time (default 2).  --from-json writes the tables of an earlier --json run
+faces at a time (default 2).  --json is rewritten after every face, so a run stopped early
+leaves the faces it did.  --from-json writes the tables of an earlier --json run
 instead of meshing.
 """
 import argparse
@@ -58,7 +59,7 @@ def outcome(r):
     return "invalid face meshed" if r["exit"] == 0 else benchlib.failure_class(r)
 
 
-def run_all(corpus, faces, semquad, timeout, jobs):
+def run_all(corpus, faces, semquad, timeout, jobs, json_path=None):
     work = tempfile.mkdtemp(prefix="sq-stress-")
 
     def one(e):
@@ -71,6 +72,11 @@ def run_all(corpus, faces, semquad, timeout, jobs):
     with concurrent.futures.ThreadPoolExecutor(max_workers=jobs) as ex:
         for r in ex.map(one, faces):
             rows.append(r)
+            # written after every face, so that a run stopped early leaves
+            # the faces it did for --from-json
+            if json_path:
+                with open(json_path, "w") as f:
+                    json.dump(rows, f, indent=1)
             print("%-28s %-6s %7.2fs  %s" % (r["file"], r["exit"], r["seconds"],
                                              r["outcome"] if r["outcome"] != "ok" else
                                              "ok refused" if r["exit"] != 0 else
@@ -126,6 +132,20 @@ def markdown(rows, corpus, semquad, timeout, classes_order):
     lines.append(benchlib.time_row(rows))
     lines.append(benchlib.time_row(ok))
     lines.append("")
+    if all("cpu_seconds" in r for r in rows):
+        lines.append("CPU time (user + system) per face, seconds, exact when one face ran at a time "
+                     "(every face, failures included; meshed faces only):")
+        lines.append("")
+        lines.append("| faces | p50 | p90 | p99 | max |")
+        lines.append("|---|---|---|---|---|")
+        lines.append(benchlib.time_row(rows, "cpu_seconds"))
+        lines.append(benchlib.time_row(ok, "cpu_seconds"))
+        slow = sorted(rows, key=lambda r: -r["cpu_seconds"])[:8]
+        lines.append("")
+        lines.append("Most CPU: " + ", ".join("`%s` %.1f s (wall %.1f s%s)" % (
+            r["file"], r["cpu_seconds"], r["seconds"], ", timeout" if r["exit"] is None else "")
+            for r in slow) + ".")
+        lines.append("")
     # the excess is the layout road's: the split road's irregular vertices are its price
     ok = [r for r in ok if r["exit"] == 0 and r.get("road", "layout") == "layout"]
     ex = [r["excess"] for r in ok if "excess" in r]
@@ -164,7 +184,7 @@ def main():
         for r in rows:
             r["outcome"] = outcome(r)
     else:
-        rows = run_all(a.corpus, faces, a.semquad, a.timeout, min(a.jobs, 2))
+        rows = run_all(a.corpus, faces, a.semquad, a.timeout, min(a.jobs, 2), a.json)
     reasons = {e["file"]: e.get("invalid_reason", "") for e in m["faces"]}
     for r in rows:
         r["invalid_reason"] = reasons[r["file"]]

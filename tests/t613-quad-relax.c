@@ -9,7 +9,7 @@
  * a second one of the shaken grid with an interior vertex held off the
  * grid: that vertex stays where it is, and the others end where a
  * relaxation with nothing kept puts them, to 1e-8.  And stop_on_fold (ring
- * below). */
+ * below), and bounds on the work on a thin face's mesh (strip below). */
 #include "cad.h"
 #include "quad_relax.h"
 #include "test_util.h"
@@ -58,6 +58,109 @@ static int ring(const cad_face *f, double r, double turn, int hold, int want)
     sq_relax_mesh m = {8, 4, xy, quad, tag, fixed, 1, 0};
     SQ_TEST_OK(sq_quad_relax(f, &m, NULL, &err), err);
     fails += sq_check_int("t613 ring", "folded", m.folded, want);
+    return fails;
+}
+
+/* The relaxation's work on a thin face's split-road mesh (stress corpus
+ * class sliver: 0073, 25 920 quads, took 18 s of CPU, most of it in the
+ * compass search): a strip of N pairs of right triangles, each cell
+ * 1/N by 1/(25 N) (0073's triangles, of base about 25 times their height),
+ * each triangle split in 3 quads at its centroid and edge midpoints
+ * (quad_split.c), the strip's boundary held, its free vertices shaken.
+ * The work is counted, not timed (sq_relax_work_stats), so the bounds hold
+ * on any machine, up to the few decisions round-off may flip:
+ * - Newton: 30 iterations measured, 46 without the stall test (before
+ *   bf727d6: a linear convergence run on by inexact directions); the bound,
+ *   38, is the midpoint.
+ * - compass search: it polls the quads around a vertex at most 8
+ *   directions x 6 steps + 1 = 49 times a visit, visits a vertex only after
+ *   a neighbour moved, at most 50 sweeps a phase, 2 phases (4900 polls per
+ *   vertex at most); 364 per free vertex measured (413 when each visit
+ *   started again from the longest step, before bf727d6).  The bound, twice
+ *   the measured, fails a search that visits every vertex every sweep
+ *   (about 2000), not the step lengths' detail.
+ * Every quad stays convex (the relaxation's promise). */
+#define STRIP_N 400
+static int strip(const cad_face *f)
+{
+    enum {
+        N = STRIP_N,
+        NB = 0,
+        NT = N + 1,
+        MB = 2 * (N + 1),
+        MT = MB + N,
+        MV = MT + N,
+        MD = MV + N + 1,
+        CL = MD + N,
+        CU = CL + N,
+        NVS = CU + N
+    };
+    static double xy[2 * NVS];
+    static int quad[4 * 6 * N], tag[4 * 6 * N], fixed[NVS];
+    const double h = 1.0 / N, w = h / 25.0, y0 = 0.5;
+    sq_error err;
+    for (int j = 0; j <= N; j++) {
+        xy[2 * (NB + j)] = xy[2 * (NT + j)] = j * h;
+        xy[2 * (NB + j) + 1] = y0;
+        xy[2 * (NT + j) + 1] = y0 + w;
+    }
+    int nq = 0;
+    for (int j = 0; j < N; j++) {
+        /* lower (b_j, b_j+1, t_j+1) and upper (b_j, t_j+1, t_j), counter-
+         * clockwise, with their edges' midpoints in the same order */
+        int tri[2][3] = {{NB + j, NB + j + 1, NT + j + 1}, {NB + j, NT + j + 1, NT + j}};
+        int mid[2][3] = {{MB + j, MV + j + 1, MD + j}, {MD + j, MT + j, MV + j}};
+        int cen[2] = {CL + j, CU + j};
+        for (int t = 0; t < 2; t++) {
+            double *c = &xy[2 * cen[t]];
+            c[0] = c[1] = 0.0;
+            for (int k = 0; k < 3; k++) {
+                const double *a = &xy[2 * tri[t][k]], *b = &xy[2 * tri[t][(k + 1) % 3]];
+                double *m = &xy[2 * mid[t][k]];
+                m[0] = 0.5 * (a[0] + b[0]), m[1] = 0.5 * (a[1] + b[1]);
+                c[0] += a[0] / 3.0, c[1] += a[1] / 3.0;
+            }
+            for (int k = 0; k < 3; k++, nq++) {
+                int q[4] = {tri[t][k], mid[t][k], cen[t], mid[t][(k + 2) % 3]};
+                for (int e = 0; e < 4; e++) {
+                    quad[4 * nq + e] = q[e];
+                    tag[4 * nq + e] = -1;
+                }
+            }
+        }
+    }
+    for (int i = 0; i < NVS; i++)
+        fixed[i] = i < MV || i == MV || i == MV + N;
+    /* the free vertices shaken, deterministically, off the split's
+     * positions (the relaxation's optimum is not where they start) */
+    int nfree = 0;
+    for (int i = 0; i < NVS; i++)
+        if (!fixed[i]) {
+            nfree++;
+            xy[2 * i] += 0.03 * h * sin(3.0 * i);
+            xy[2 * i + 1] += 0.03 * w * cos(5.0 * i);
+        }
+    sq_relax_mesh m = {NVS, nq, xy, quad, tag, fixed};
+    sq_relax_work *work = NULL;
+    SQ_TEST_OK(sq_quad_relax(f, &m, &work, &err), err);
+    int steps;
+    long polls;
+    sq_relax_work_stats(work, &steps, &polls);
+    sq_relax_work_free(&work);
+    int convex = 1;
+    for (int q = 0; q < nq; q++)
+        for (int k = 0; k < 4; k++) {
+            const double *p = &xy[2 * quad[4 * q + k]], *a = &xy[2 * quad[4 * q + (k + 1) % 4]],
+                         *b = &xy[2 * quad[4 * q + (k + 3) % 4]];
+            convex &= (a[0] - p[0]) * (b[1] - p[1]) - (a[1] - p[1]) * (b[0] - p[0]) > 0.0;
+        }
+    int fails = sq_check_int("t613 strip", "every quad convex", convex, 1);
+    fails += sq_check_int("t613 strip", "Newton iterations <= 38", steps <= 38, 1);
+    printf("t613 strip: %d quads, %d free vertices, %d Newton iterations, %.1f polls per free "
+           "vertex\n",
+           nq, nfree, steps, (double)polls / nfree);
+    fails += sq_check_int("t613 strip", "compass polls per free vertex <= 730",
+                          polls <= 730L * nfree, 1);
     return fails;
 }
 
@@ -141,6 +244,7 @@ int main(void)
                           hypot(xy[2 * ID(3, 2)] - 0.5, xy[2 * ID(3, 2) + 1] - 0.5), 0.02, 0.01);
     sq_relax_work_free(&work);
     sq_relax_work_free(&work); /* NULL-safe */
+    fails += strip(f);
     cad_face_free(&f);
     cad_model_free(&model);
     sq_test_path(path, sizeof path, 0, "square_hole.step");

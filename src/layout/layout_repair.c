@@ -28,7 +28,7 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
     sq_layout_defects d;
     memset(&d, 0, sizeof d);
     int it;
-    for (it = 0; it < 400 && st == SQ_OK && r.work <= WORK_MAX; it++) {
+    for (it = 0; it < 400 && st == SQ_OK && r.work <= WORK_MAX && r.lwork <= LINE_WORK_MAX; it++) {
         /* set-level repairs first, the graph rebuilt after them; each
          * iteration follows a change of the set */
         int done = 0;
@@ -69,7 +69,9 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
             char buf[400];
             sq_layout_defects_summary(&d, buf, sizeof buf);
             st = SQ_FAIL(err, SQ_ERR_LAYOUT, "%s%s", buf,
-                         r.work > WORK_MAX ? " (repairs stopped at their work bound)" : "");
+                         r.work > WORK_MAX || r.lwork > LINE_WORK_MAX
+                             ? " (repairs stopped at their work bound)"
+                             : "");
         }
     } else if (st != SQ_ERR_LAYOUT) {
         sq_layout_free(L);

@@ -20,6 +20,7 @@ typedef struct {
     int nhit, hit_ok; /* valid while hit_ok: the set has not changed */
     int trials;    /* patch repairs tried (try_candidate), up to MAX_TRIALS */
     double work;   /* separatrix points the set-level passes visited (WORK_MAX) */
+    double lwork;  /* segments the repair lines' steps tested (LINE_WORK_MAX) */
 } lay_repair;
 
 /* The repairs' work bound, in separatrix points visited by the set-level
@@ -29,6 +30,18 @@ typedef struct {
  * line's steps have their own bound.)  A bound on the work, not on the
  * clock, keeps the answer the same on every machine. */
 #define WORK_MAX 1e6
+/* The repair lines' work bound, in segments (separatrix and boundary) their
+ * steps tested: each step tests every one, and a line in a thin patch (a
+ * tiny edge's) steps at MIN_STEP_FRACTION of the default step, so lines
+ * within their step budget could still take minutes (stress corpus 0311, a
+ * 1.7e-6 edge: over 49 s of CPU, 1e10 tests).  About 10 s of one core, as
+ * WORK_MAX (5 ns a test): of the stress corpus's 131 layouts that succeed
+ * (2026-11-26), the most took 1.3e8 (0100), the examples' 1.3e5 (annulus),
+ * T106's none.  A bound on the work, not on the clock, as WORK_MAX. */
+#define LINE_WORK_MAX 2e9
+
+/* Points of the separatrix set (repair_set.c). */
+long lay_set_points(const sq_separatrix_set *S);
 
 /* A repair line (repair_line.c): its points and where it ended. */
 typedef struct {

@@ -7,8 +7,7 @@
 #include <math.h>
 #include <stdlib.h>
 
-/* Points of the set. */
-static long set_points(const sq_separatrix_set *S)
+long lay_set_points(const sq_separatrix_set *S)
 {
     long n = 0;
     for (int i = 0; i < S->n; i++) n += S->s[i].npts;
@@ -249,7 +248,7 @@ sq_status lay_set_repair(lay_repair *r, int *done, sq_error *err)
 {
     *done = 0;
     r->hit_ok = 0;
-    r->work += (double)set_points(&r->L->seps);
+    r->work += (double)lay_set_points(&r->L->seps);
     SQ_TRY(remove_duplicate(r, done, err));
     if (!*done) SQ_TRY(make_tjunction(r, done, err));
     if (!*done) SQ_TRY(cut_limit_cycle(r, done, err));

@@ -58,5 +58,11 @@ typedef struct sq_relax_work sq_relax_work;
 sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **work,
                         sq_error *err);
 void sq_relax_work_free(sq_relax_work **work); /* NULL-safe, NULLs *work */
+/* What the last relaxation with this work did: its Newton iterations (at
+ * most 60, a retry with a fresh factorization included) and its compass search's
+ * evaluations of the quads around one vertex, so that a test can bound the
+ * relaxation's work on a mesh, which no time measurement on a shared
+ * machine does. */
+void sq_relax_work_stats(const sq_relax_work *work, int *newton_steps, long *polls);
 
 #endif
