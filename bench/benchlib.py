@@ -9,6 +9,9 @@ import subprocess
 import time
 
 
+QUALITY_EXIT = 8  # semquad's status for a mesh written below the quality floor
+
+
 def run_mesh(semquad, step, workdir, tag, timeout, extra=()):
     """`semquad mesh STEP -q --report R -o M` (plus extra), killed after timeout s.
     Returns a dict: exit (None on timeout, -N on signal N), seconds, stderr_line,
@@ -42,7 +45,8 @@ def run_mesh(semquad, step, workdir, tag, timeout, extra=()):
     mine = [ln for ln in lines if ln.startswith("semquad:")]
     r = {"exit": code, "seconds": round(dt, 3), "cpu_seconds": round(cpu, 3), "stderr_lines": len(lines),
          "stderr": (mine or lines or [""])[-1], "stderr_all": lines[-20:]}
-    if code == 0 and os.path.exists(rep):
+    # exit 8: the mesh is written but its worst quad is below --min-quality
+    if code in (0, QUALITY_EXIT) and os.path.exists(rep):
         r.update(report_figures(rep))
     for f in (rep, msh):
         if os.path.exists(f):
@@ -70,12 +74,13 @@ def report_figures(path):
 
 
 def outcome(r):
-    """ok: exit 0 and every scaled Jacobian > 0; else a failure class."""
-    if r["exit"] == 0:
+    """ok: a valid mesh written (exit 0, or 8: below the quality floor) with every
+    scaled Jacobian > 0; else a failure class."""
+    if r["exit"] in (0, QUALITY_EXIT):
         sj = r.get("min_sj")
         if sj is not None and sj > 0:
             return "ok"
-        return "exit 0 but min scaled Jacobian %s" % ("missing" if sj is None else "<= 0")
+        return "exit %d but min scaled Jacobian %s" % (r["exit"], "missing" if sj is None else "<= 0")
     return failure_class(r)
 
 
@@ -90,6 +95,15 @@ def blank(msg):
     msg = re.sub(r"\([^()]*\)", "(…)", msg)
     msg = _NUMS.sub("N", msg)
     return " ".join(msg.split()[:9])
+
+
+def below_floor_line(ok):
+    """Markdown: how many of the valid meshes are below the quality floor (exit 8)."""
+    low = sorted(ok, key=lambda r: r.get("min_sj") or 0.0)
+    low = [r for r in low if r["exit"] == QUALITY_EXIT]
+    return ("Of these, %d are below the default quality floor (exit 8: written, worst scaled "
+            "Jacobian below `--min-quality` 0.01)%s." %
+            (len(low), "" if not low else ", the worst at %.2g" % low[0]["min_sj"]))
 
 
 def failure_class(r):

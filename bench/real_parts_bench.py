@@ -223,10 +223,11 @@ def markdown(file_rows, rows, args):
     bad_files = [fr for fr in file_rows if fr["info_error"]]
     n = len(rows)
     lines = ["%d files, %d planar faces in all, %d meshed here (%s per file); %d meshed (%.1f %%): "
-             "exit 0 with every scaled Jacobian > 0; timeout %g s per face."
+             "exit 0 or 8 (below the quality floor) with every scaled Jacobian > 0; timeout %g s per face."
              % (len(file_rows), sum(fr["planar"] for fr in file_rows), n,
                 "all" if args.max_faces <= 0 else "at most %d, evenly spread" % args.max_faces,
-                len(ok), 100.0 * len(ok) / max(n, 1), args.timeout)]
+                len(ok), 100.0 * len(ok) / max(n, 1), args.timeout),
+             benchlib.below_floor_line(ok)]
     if bad_files:
         lines.append("")
         lines.append("Files `semquad info` cannot read (their faces are not counted above): " +

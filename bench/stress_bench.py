@@ -56,7 +56,8 @@ def outcome(r):
         return benchlib.outcome(r)
     if r["exit"] == 4:
         return "ok"
-    return "invalid face meshed" if r["exit"] == 0 else benchlib.failure_class(r)
+    return ("invalid face meshed" if r["exit"] in (0, benchlib.QUALITY_EXIT)
+            else benchlib.failure_class(r))
 
 
 def run_all(corpus, faces, semquad, timeout, jobs, json_path=None):
@@ -79,7 +80,7 @@ def run_all(corpus, faces, semquad, timeout, jobs, json_path=None):
                     json.dump(rows, f, indent=1)
             print("%-28s %-6s %7.2fs  %s" % (r["file"], r["exit"], r["seconds"],
                                              r["outcome"] if r["outcome"] != "ok" else
-                                             "ok refused" if r["exit"] != 0 else
+                                             "ok refused" if r["exit"] not in (0, benchlib.QUALITY_EXIT) else
                                              "ok %s quads=%s irr=%s sj=%.3f" % (r.get("road"), r.get("quads"),
                                                                                 r.get("irregular"), r["min_sj"])),
                   file=sys.stderr, flush=True)
@@ -91,10 +92,11 @@ def markdown(rows, corpus, semquad, timeout, classes_order):
     ok = [r for r in rows if r["outcome"] == "ok"]
     lines = []
     n = len(rows)
-    lines.append("%d faces, %d succeeded (%.1f %%): a valid face meshed (exit 0, every scaled Jacobian "
-                 "> 0), an invalid one (class `invalid`, or marked by the generator as not written as drawn) "
+    lines.append("%d faces, %d succeeded (%.1f %%): a valid face meshed (every scaled Jacobian "
+                 "> 0: exit 0, or 8 below the quality floor), an invalid one (class `invalid`, or marked by the generator as not written as drawn) "
                  "refused with exit 4; timeout %g s per face."
                  % (n, len(ok), 100.0 * len(ok) / max(n, 1), timeout))
+    lines.append(benchlib.below_floor_line([r for r in ok if r["class"] != "invalid"]))
     lines.append("")
     lines.append("| class | faces | succeeded | % | failures (exit codes) |")
     lines.append("|---|---|---|---|---|")
