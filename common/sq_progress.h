@@ -17,4 +17,14 @@ static inline void sq_progress_report(const sq_progress *p, const char *stage, l
     if (p && p->fn) p->fn(p->data, stage, done, total);
 }
 
+/* For a loop over many items (a writer's nodes and elements): reports
+ * `done` of `total` when done is 0, a multiple of a hundredth of total
+ * (rounded up) or total, so at most 102 events whatever total is, at the
+ * same counts on every run. */
+static inline void sq_progress_every(const sq_progress *p, const char *stage, long done, long total)
+{
+    long step = total > 100 ? (total + 99) / 100 : 1;
+    if (done % step == 0 || done == total) sq_progress_report(p, stage, done, total);
+}
+
 #endif

@@ -116,8 +116,11 @@ typedef void (*sq_log_fn)(void *data, sq_log_level level, const char *line);
 /* Called as a stage that loops advances: `done` of `total` units of
  * `stage`: "trace" (separatrices finished), "mesh" (layout patches
  * filled), "relax" (Newton steps of the most allowed; a relaxation that
- * converges stops short of total), "write" (0 of 1 when a mesh file is
- * begun, 1 of 1 when it is complete).  A stage may run more than once (a
+ * converges stops short of total), "write" (records of a mesh file
+ * written: 0 when it is begun, total when its last is written; nodes and
+ * elements for MSH and VTU, edges and quads for Nektar++ XML, quads and
+ * boundary sides for SVG; at most about 100 events per file, at the same
+ * counts on every run).  A stage may run more than once (a
  * retry, the second road).  `data` is sq_options.progress_data.  NULL:
  * none. */
 typedef void (*sq_progress_fn)(void *data, const char *stage, long done, long total);

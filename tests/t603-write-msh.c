@@ -269,7 +269,7 @@ int main(int argc, char **argv)
                          k ? "equi" : "gll");
                 snprintf(path, sizeof path, "%s/m%d%d%d.msh", dir, Q, k, which);
                 sq_error err;
-                SQ_TEST_OK(sq_write_msh(path, m, &err), err);
+                SQ_TEST_OK(sq_write_msh(path, m, NULL, &err), err);
                 f += check_file(path, m, ctx);
                 /* Gmsh's start-up per file: a subset of orders */
                 if (have_qs && (Q == 1 || Q == 2 || Q == 4 || Q == 10)) {
@@ -282,11 +282,11 @@ int main(int argc, char **argv)
     /* an unwritable target fails with SQ_ERR_OUTPUT and leaves nothing */
     sq_quad_mesh *m = t6_square(2, 2, SQ_NODES_GLL);
     sq_error err;
-    f += sq_check_int("unwritable", "status", sq_write_msh("/nonexistent-dir/x.msh", m, &err),
+    f += sq_check_int("unwritable", "status", sq_write_msh("/nonexistent-dir/x.msh", m, NULL, &err),
                       SQ_ERR_OUTPUT);
     m->bnd_tag[0] = 7; /* out of range */
     snprintf(path, sizeof path, "%s/bad.msh", dir);
-    f += sq_check_int("bad tag", "status", sq_write_msh(path, m, &err), SQ_ERR_USAGE);
+    f += sq_check_int("bad tag", "status", sq_write_msh(path, m, NULL, &err), SQ_ERR_USAGE);
     f += sq_check_int("bad tag", "file left", access(path, F_OK) == 0, 0);
     sq_quad_mesh_free(&m);
     rmdir(dir);

@@ -31,7 +31,7 @@ int main(int argc, char **argv)
                 SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, &q, &err), err);
                 char path[256];
                 snprintf(path, sizeof path, "%s/m%d%d%d.msh", dir, Q, k, which);
-                SQ_TEST_OK(sq_write_msh(path, m, &err), err);
+                SQ_TEST_OK(sq_write_msh(path, m, NULL, &err), err);
                 snprintf(cmd, sizeof cmd, "%s '%s' '%s' %d %d %d %d %d %d %.17g", py, argv[1], path,
                          m->nnodes, m->nquads, m->nbnd, sq_gmsh_quad_type(Q), sq_gmsh_line_type(Q),
                          m->ntags + 1, q.area);

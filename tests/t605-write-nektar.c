@@ -294,7 +294,7 @@ int main(void)
                 snprintf(ctx, sizeof ctx, "%s Q=%d %s", which ? "disc" : "annulus", Q, k ? "equi" : "gll");
                 snprintf(path, sizeof path, "%s/m.xml", dir);
                 sq_error err;
-                SQ_TEST_OK(sq_write_nektar(path, m, &err), err);
+                SQ_TEST_OK(sq_write_nektar(path, m, NULL, &err), err);
                 f += check(path, m, ctx);
                 remove(path);
                 sq_quad_mesh_free(&m);

@@ -171,12 +171,12 @@ int main(void)
                 snprintf(ctx, sizeof ctx, "%s Q=%d %s", which ? "disc" : "annulus", Q, k ? "equi" : "gll");
                 snprintf(path, sizeof path, "%s/m.vtu", dir);
                 sq_error err;
-                SQ_TEST_OK(sq_write_quad_vtu(path, m, &err), err);
+                SQ_TEST_OK(sq_write_quad_vtu(path, m, NULL, &err), err);
                 f += check_vtu(path, m, ctx);
                 remove(path);
                 if (Q == 4) {
                     snprintf(path, sizeof path, "%s/m.svg", dir);
-                    SQ_TEST_OK(sq_write_quad_svg(path, m, &err), err);
+                    SQ_TEST_OK(sq_write_quad_svg(path, m, NULL, &err), err);
                     char *s = slurp(path);
                     f += s ? well_formed(s, "svg") : 1;
                     if (s && !strstr(s, "<svg")) printf("svg: no <svg>\n"), f++;

@@ -4,7 +4,9 @@
 # that command's --help with its default; --opt=value and --opt value mean
 # the same, byte for byte; -- ends the options; an unknown option exits 2
 # naming the closest one; the deprecated --order of field and layout warns
-# once; the bash completion script offers the table's options and choices.
+# once; --progress=json prints progress events only, writing's as it goes
+# (a rising count per mesh format, files unchanged by progress); the bash
+# completion script offers the table's options and choices.
 # usage: t904-cli-options.sh SEMQUAD EXAMPLES_DIR BASH_COMPLETION
 set -u
 sq=$1
@@ -96,7 +98,23 @@ grep -vqE '^\{"stage": "(trace|mesh|relax|write)", "done": [0-9]+, "total": [0-9
 for s in trace mesh relax write; do grep -q "\"stage\": \"$s\"" "$tmp/err" || fail "--progress=json: no $s event"; done
 sed -E 's/.*"done": ([0-9]+), "total": ([0-9]+).*/\1 \2/' "$tmp/err" | awk '$1 > $2 {bad = 1} END {exit bad}' ||
     fail "--progress=json: done above total"
-tail -1 "$tmp/err" | grep -qx '{"stage": "write", "done": 1, "total": 1}' || fail "--progress=json: the last event is not the write's end"
+tail -1 "$tmp/err" | grep -qE '^\{"stage": "write", "done": ([0-9]+), "total": \1\}$' || fail "--progress=json: the last event is not the write's end"
+# writing reports as it goes (issue 21): for each format, from 0 up to total
+# in at most ~100 steps, done rising; the file is byte for byte the one
+# written without progress
+for f in msh xml vtu svg; do
+    "$sq" mesh "$ex/square_hole.step" --size 0.02 -q --progress=json -o "$tmp/json.$f" 2>"$tmp/err" >/dev/null ||
+        fail "square_hole --progress=json -o .$f: $(cat "$tmp/err")"
+    "$sq" mesh "$ex/square_hole.step" --size 0.02 -q --progress=none -o "$tmp/none.$f" 2>/dev/null >/dev/null
+    cmp -s "$tmp/json.$f" "$tmp/none.$f" || fail "square_hole .$f: --progress=json changes the file written"
+    grep '"stage": "write"' "$tmp/err" | sed -E 's/.*"done": ([0-9]+), "total": ([0-9]+).*/\1 \2/' >"$tmp/write"
+    awk -v f=$f 'NR == 1 && $1 != 0 {print f ": the first write event is at " $1; bad = 1}
+                 NR > 1 && ($1 <= d || $2 != t) {print f ": write event " $1 " of " $2 " after " d " of " t; bad = 1}
+                 {d = $1; t = $2}
+                 END {if (NR < 10 || NR > 102) {print f ": " NR " write events"; bad = 1}
+                      if (d != t) {print f ": writing ended at " d " of " t; bad = 1}
+                      exit bad}' "$tmp/write" || fail "square_hole .$f: write events wrong"
+done
 "$sq" mesh "$ex/half_disc.step" --size 0.3 --no-output 2>"$tmp/err" >/dev/null
 grep -q "$(printf '\r')" "$tmp/err" && fail "a progress bar on a stderr that is not a terminal"
 expect 2 "--progress expects auto, json or none" mesh "$ex/half_disc.step" --progress=bar

@@ -336,7 +336,8 @@ void sq_mesh_frame(const sq_mesh *m, double origin[3], double xdir[3], double yd
 }
 
 /* The mesh writers, by the output's extension. */
-typedef sq_status (*mesh_writer)(const char *path, const sq_quad_mesh *m, sq_error *err);
+typedef sq_status (*mesh_writer)(const char *path, const sq_quad_mesh *m,
+                                 const sq_progress *progress, sq_error *err);
 static const struct {
     const char *ext;
     mesh_writer write;
@@ -373,9 +374,7 @@ sq_status sq_mesh_write_format(const sq_mesh *m, const char *path, const char *f
     if (!write)
         return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)", path);
     double t = sq_now();
-    sq_progress_report(&m->progress, "write", 0, 1);
-    sq_status st = write(path, m->q, err);
-    if (st == SQ_OK) sq_progress_report(&m->progress, "write", 1, 1);
+    sq_status st = write(path, m->q, &m->progress, err);
     *m->t_write += sq_now() - t;
     return st;
 }

@@ -37,9 +37,12 @@ static int side_node(int Q, int k, int s)
     }
 }
 
-sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, sq_error *err)
+sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, const sq_progress *progress,
+                       sq_error *err)
 {
     SQ_TRY(sq_quad_mesh_check(m0, err));
+    long done = 0, total = (long)m0->nnodes + m0->nquads + m0->nbnd;
+    sq_progress_every(progress, "write", 0, total);
     sq_quad_mesh *eq = NULL;
     const sq_quad_mesh *m = m0;
     if (m0->nodes != SQ_NODES_EQUISPACED) {
@@ -96,8 +99,10 @@ sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, sq_error *err)
     fprintf(fp, "$Nodes\n1 %d %d %d\n2 1 0 %d\n", m->nnodes, m->nnodes ? 1 : 0, m->nnodes,
             m->nnodes);
     for (int v = 0; v < m->nnodes; v++) fprintf(fp, "%d\n", v + 1);
-    for (int v = 0; v < m->nnodes; v++)
+    for (int v = 0; v < m->nnodes; v++) {
         fprintf(fp, "%.17g %.17g 0\n", m->xy[2 * v], m->xy[2 * v + 1]);
+        sq_progress_every(progress, "write", ++done, total);
+    }
     fputs("$EndNodes\n", fp);
     /* elements: the quads (tags 1..nquads), then a block of lines per curve */
     int nblocks = 1, nel = m->nquads + m->nbnd;
@@ -110,6 +115,7 @@ sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, sq_error *err)
         for (int k = 0; k < npe; k++)
             fprintf(fp, " %d", c[sq_quad_node(Q, ij[2 * k], ij[2 * k + 1])] + 1);
         fputc('\n', fp);
+        sq_progress_every(progress, "write", ++done, total);
     }
     int tag = m->nquads;
     for (int t = 0; t < nt; t++) {
@@ -121,6 +127,7 @@ sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, sq_error *err)
             fprintf(fp, "%d", ++tag);
             for (int k = 0; k <= Q; k++) fprintf(fp, " %d", c[side_node(Q, m->bnd_side[s], lo[k])] + 1);
             fputc('\n', fp);
+            sq_progress_every(progress, "write", ++done, total);
         }
     }
     fputs("$EndElements\n", fp);

@@ -12,11 +12,15 @@
 #define SQ_WRITE_MSH_H
 
 #include "quad_mesh.h"
+#include "sq_progress.h"
 #include "sq_status.h"
 
 /* Atomic (outfile.h): SQ_ERR_OUTPUT if the file cannot be written,
- * SQ_ERR_USAGE for an inconsistent mesh (node index or tag out of range). */
-sq_status sq_write_msh(const char *path, const sq_quad_mesh *m, sq_error *err);
+ * SQ_ERR_USAGE for an inconsistent mesh (node index or tag out of range).
+ * Reports "write" to progress (may be NULL): nodes and elements (quads,
+ * boundary lines) written of all, at most about 100 events. */
+sq_status sq_write_msh(const char *path, const sq_quad_mesh *m, const sq_progress *progress,
+                       sq_error *err);
 
 /* Checks shared by the writers: every node index, boundary quad, side and
  * tag in range. */

@@ -49,7 +49,8 @@ static int cmp_int(const void *a, const void *b)
     return (x > y) - (x < y);
 }
 
-sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, sq_error *err)
+sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_progress *progress,
+                          sq_error *err)
 {
     SQ_TRY(sq_quad_mesh_check(m, err));
     int Q = m->order, npe = (Q + 1) * (Q + 1), nq = m->nquads, ns = 4 * nq;
@@ -102,6 +103,8 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, sq_error *err
         ne++;
         i = k;
     }
+    long done = 0, total = (long)(ne + nq) * (Q >= 2 ? 2 : 1);
+    sq_progress_every(progress, "write", 0, total);
     fputs("<?xml version=\"1.0\" encoding=\"utf-8\"?>\n<NEKTAR>\n"
           "  <GEOMETRY DIM=\"2\" SPACE=\"2\">\n    <VERTEX>\n", fp);
     for (int v = 0; v < m->nnodes; v++)
@@ -114,11 +117,14 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, sq_error *err
         const int *c = &m->conn[(size_t)q * npe];
         fprintf(fp, "      <E ID=\"%d\">%d %d</E>\n", e, vid[c[side_node(Q, k, 0)]],
                 vid[c[side_node(Q, k, Q)]]);
+        sq_progress_every(progress, "write", ++done, total);
     }
     fputs("    </EDGE>\n    <ELEMENT>\n", fp);
-    for (int q = 0; q < nq; q++)
+    for (int q = 0; q < nq; q++) {
         fprintf(fp, "      <Q ID=\"%d\">%d %d %d %d</Q>\n", q, edge_of[4 * q], edge_of[4 * q + 1],
                 edge_of[4 * q + 2], edge_of[4 * q + 3]);
+        sq_progress_every(progress, "write", ++done, total);
+    }
     fputs("    </ELEMENT>\n", fp);
     if (Q >= 2) {
         /* Nektar++ needs every edge of a quad with a face curve to carry Q+1
@@ -134,6 +140,7 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, sq_error *err
                 fprintf(fp, "%s%.17g %.17g 0", s ? " " : "", x[0], x[1]);
             }
             fputs("</E>\n", fp);
+            sq_progress_every(progress, "write", ++done, total);
         }
         for (int q = 0; q < nq; q++) {
             const int *c = &m->conn[(size_t)q * npe];
@@ -143,6 +150,7 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, sq_error *err
                 fprintf(fp, "%s%.17g %.17g 0", n ? " " : "", m->xy[2 * (size_t)c[n]],
                         m->xy[2 * (size_t)c[n] + 1]);
             fputs("</F>\n", fp);
+            sq_progress_every(progress, "write", ++done, total);
         }
         fputs("    </CURVED>\n", fp);
     }

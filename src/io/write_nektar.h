@@ -15,9 +15,13 @@
 #define SQ_WRITE_NEKTAR_H
 
 #include "quad_mesh.h"
+#include "sq_progress.h"
 #include "sq_status.h"
 
-/* Atomic (outfile.h). */
-sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, sq_error *err);
+/* Atomic (outfile.h).  Reports "write" to progress (may be NULL): edges and
+ * quads written of all (from Q = 2 each twice, in EDGE or ELEMENT and with
+ * its points in CURVED), at most about 100 events. */
+sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_progress *progress,
+                          sq_error *err);
 
 #endif

@@ -33,10 +33,13 @@ static void side_poly(const sq_quad_mesh *m, const sq_quad_basis *b, int q, int 
     }
 }
 
-sq_status sq_write_quad_svg(const char *path, const sq_quad_mesh *m, sq_error *err)
+sq_status sq_write_quad_svg(const char *path, const sq_quad_mesh *m, const sq_progress *progress,
+                            sq_error *err)
 {
     SQ_TRY(sq_quad_mesh_check(m, err));
     if (m->nquads == 0) return SQ_FAIL(err, SQ_ERR_USAGE, "no quads to draw");
+    long done = 0, total = (long)m->nquads + m->nbnd;
+    sq_progress_every(progress, "write", 0, total);
     sq_quad_basis b;
     SQ_TRY(sq_quad_basis_init(&b, m->order, m->nodes, err));
     double *eta = malloc(sizeof(double) * (size_t)m->nquads);
@@ -73,10 +76,12 @@ sq_status sq_write_quad_svg(const char *path, const sq_quad_mesh *m, sq_error *e
         }
         sq_quad_eta_color(eta[q], col);
         sq_svg_polyline(&svg, 4 * NSUB, poly, 1, "#333333", 0.5, col);
+        sq_progress_every(progress, "write", ++done, total);
     }
     for (int s = 0; s < m->nbnd; s++) {
         side_poly(m, &b, m->bnd_quad[s], m->bnd_side[s], pts);
         sq_svg_polyline(&svg, NSUB + 1, pts, 0, "#111111", 2.0, "none");
+        sq_progress_every(progress, "write", ++done, total);
     }
     /* legend: ramp from eta 0.5 to 1 */
     double lx = bb[0], ly = bb[1] - 0.35 * pad, lw = fmin(w, 300.0 / svg.scale) / 20.0;

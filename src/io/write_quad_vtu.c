@@ -15,9 +15,12 @@ static void cell_array(FILE *fp, const char *name, const double *v, int n)
     fputs("</DataArray>\n", fp);
 }
 
-sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m0, sq_error *err)
+sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m0, const sq_progress *progress,
+                            sq_error *err)
 {
     SQ_TRY(sq_quad_mesh_check(m0, err));
+    long done = 0, total = (long)m0->nnodes + m0->nquads;
+    sq_progress_every(progress, "write", 0, total);
     int Q = m0->order, npe = (Q + 1) * (Q + 1), nq = m0->nquads;
     sq_quad_mesh *eq = NULL;
     const sq_quad_mesh *m = m0;
@@ -44,7 +47,10 @@ sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m0, sq_error *
                 "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n"
                 "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
             m->nnodes, nq);
-    for (int v = 0; v < m->nnodes; v++) fprintf(fp, "%.17g %.17g 0\n", m->xy[2 * v], m->xy[2 * v + 1]);
+    for (int v = 0; v < m->nnodes; v++) {
+        fprintf(fp, "%.17g %.17g 0\n", m->xy[2 * v], m->xy[2 * v + 1]);
+        sq_progress_every(progress, "write", ++done, total);
+    }
     fputs("</DataArray>\n</Points>\n<Cells>\n"
           "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n", fp);
     for (int q = 0; q < nq; q++) {
@@ -52,6 +58,7 @@ sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m0, sq_error *
         for (int k = 0; k < npe; k++)
             fprintf(fp, "%d%c", c[sq_quad_node(Q, ij[2 * k], ij[2 * k + 1])],
                     k + 1 < npe ? ' ' : '\n');
+        sq_progress_every(progress, "write", ++done, total);
     }
     fputs("</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n", fp);
     for (int q = 0; q < nq; q++) fprintf(fp, "%ld\n", (long)npe * (q + 1));

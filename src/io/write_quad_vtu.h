@@ -9,9 +9,12 @@
 #define SQ_WRITE_QUAD_VTU_H
 
 #include "quad_mesh.h"
+#include "sq_progress.h"
 #include "sq_status.h"
 
-/* Atomic (outfile.h). */
-sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m, sq_error *err);
+/* Atomic (outfile.h).  Reports "write" to progress (may be NULL): points
+ * and cells written of all, at most about 100 events. */
+sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m, const sq_progress *progress,
+                            sq_error *err);
 
 #endif
