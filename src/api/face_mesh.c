@@ -284,8 +284,7 @@ sq_status sq_mesh_check_quality(const sq_mesh *m, const sq_options *o, sq_error 
 {
     sq_options def;
     o = sq_api_options(o, &def);
-    if (!(o->min_quality >= 0.0 && o->min_quality <= 1.0))
-        return SQ_FAIL(err, SQ_ERR_USAGE, "--min-quality %g: expects 0..1", o->min_quality);
+    SQ_TRY(sq_options_check(o, err)); /* min_quality in 0..1 among them */
     const sq_quad_quality *q = &m->quality;
     if (o->min_quality == 0.0 || q->min_scaled_jacobian >= o->min_quality) return SQ_OK;
     char why[256];
