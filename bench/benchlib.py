@@ -99,8 +99,7 @@ def blank(msg):
 
 def below_floor_line(ok):
     """Markdown: how many of the valid meshes are below the quality floor (exit 8)."""
-    low = sorted(ok, key=lambda r: r.get("min_sj") or 0.0)
-    low = [r for r in low if r["exit"] == QUALITY_EXIT]
+    low = sorted((r for r in ok if r["exit"] == QUALITY_EXIT), key=lambda r: r["min_sj"])
     return ("Of these, %d are below the default quality floor (exit 8: written, worst scaled "
             "Jacobian below `--min-quality` 0.01)%s." %
             (len(low), "" if not low else ", the worst at %.2g" % low[0]["min_sj"]))
