@@ -161,7 +161,6 @@ def part1(d):
         prev = (V, len(quads))
         errs.append(area - A)
     r = rates(errs)
-    print("naca0012 Q=4 area errors", errs, "rates", r)
     check(all(x >= 3.5 for x in r), f"naca0012 Q=4: area rates {r} below 3.5")
 
 
@@ -178,7 +177,6 @@ def part2(d):
     check(abs(A - math.pi) <= 1e-12, f"disc area {A}")
     for Q, r in order_rates(family(d, "disc", [step, "--levels", "3", "--orders", "1,2,3"]),
                             A).items():
-        print(f"disc Q={Q} area rates {r}")
         check(all(abs(x - 2 * Q) <= 0.1 for x in r), f"disc Q={Q}: rates {r}, expected {2 * Q}")
 
 
@@ -187,7 +185,6 @@ def part3(d):
     A = exact_area(step)
     for Q, r in order_rates(family(d, "nacaq", [step, "--levels", "5", "--orders", "1,2"]),
                             A).items():
-        print(f"naca0012 Q={Q} area rates {r}")
         check(abs(r[-1] - min(2 * Q, 4)) <= 0.15,
               f"naca0012 Q={Q}: last rate {r[-1]}, expected {min(2 * Q, 4)}")
 
@@ -227,4 +224,3 @@ with tempfile.TemporaryDirectory() as d:
         part(d)
 if fails:
     sys.exit(f"{len(fails)} failures")
-print("ok")
