@@ -45,8 +45,9 @@ docs/convergence-families.md), read back with Gmsh's own reader (python3-gmsh).
 4. half_disc --orders 2,3,5: STEM_Q2/Q3/Q5.msh hold the same vertices and quads,
    Gmsh's element types of orders 2, 3, 5 ((Q+1)^2 nodes), and the default
    order-4 mesh is not among them.
-5. Usage errors (exit 2, no file left): --manifest without a family, --levels 0,
-   --orders 11, --levels with -o - or --no-output.
+5. Usage errors (exit 2, one line, no file left): --manifest without a family,
+   --levels 0, --orders 11, --levels with -o - or --no-output, and levels
+   beyond --max-quads (refused after level 1 is meshed, before any file).
 usage: t622-mesh-family.py SEMQUAD EXAMPLES_DIR"""
 import json
 import math
@@ -211,8 +212,9 @@ def part5(d):
     step = os.path.join(ex, "square.step")
     out = os.path.join(d, "bad.msh")
     for args in (["--manifest", os.path.join(d, "bad.json")], ["--levels", "0"],
-                 ["--orders", "11"], ["--levels", "2", "-o", "-"], ["--levels", "2", "--no-output"]):
-        a = [step, *args] + ([] if "-o" in args or "--no-output" in args else ["-o", out])
+                 ["--orders", "11"], ["--levels", "2", "-o", "-"], ["--levels", "2", "--no-output"],
+                 ["--levels", "4", "--max-quads", "1000"]):
+        a = [step, *args, "-q"] + ([] if "-o" in args or "--no-output" in args else ["-o", out])
         p = run("mesh", *a, status=2)
         check(p.stderr.count("\n") == 1, f"{args}: not one line: {p.stderr!r}")
     left = [f for f in os.listdir(d) if f.startswith("bad")]

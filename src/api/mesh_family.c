@@ -47,9 +47,9 @@ sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const sq_optio
                        levels, order);
     if ((double)m->q->nquads * pow(4.0, levels) > o->max_quads)
         return SQ_FAIL(err, SQ_ERR_USAGE,
-                       "%d levels of %d quads give %.3g quads, more than --max-quads %.3g",
-                       levels, m->q->nquads, (double)m->q->nquads * pow(4.0, levels),
-                       o->max_quads);
+                       "%d quads split 2 x 2 %d time%s give %.0f quads, more than --max-quads %.3g",
+                       m->q->nquads, levels, levels == 1 ? "" : "s",
+                       (double)m->q->nquads * pow(4.0, levels), o->max_quads);
     const cad_face *face = m->face.cad;
     sq_quad_mesh *q = NULL;
     /* level by level at m's order, so each level's vertices are the last's */

@@ -93,7 +93,7 @@ static void family_free(family *f)
     free(f->made);
 }
 
-/* Write m as the family's next file, one line on stdout. */
+/* m as the family's next file (named, not written yet). */
 static sq_status add_file(family *f, const sq_mesh *m, int level, int order,
                           const sq_cli_args *a, sq_error *err)
 {
@@ -103,20 +103,14 @@ static sq_status add_file(family *f, const sq_mesh *m, int level, int order,
     f->mesh[k] = m;
     f->level[k] = level;
     f->n++;
-    SQ_TRY(family_name(a, a->levels ? level : 0, a->norders ? order : 0, f->file[k],
-                       FAMILY_NAME_MAX, err));
-    SQ_TRY(sq_mesh_write_format(m, f->file[k], a->format, err));
-    char *text = NULL;
-    SQ_TRY(sq_mesh_describe(m, &text, err));
-    if (!a->quiet) printf("%s: %s", f->file[k], text);
-    sq_free(text);
-    return SQ_OK;
+    return family_name(a, a->levels ? level : 0, a->norders ? order : 0, f->file[k],
+                       FAMILY_NAME_MAX, err);
 }
 
 /* Level `level` (the mesh `base`) at every order asked: the same quads,
  * raised or lowered from base's own maps. */
-static sq_status write_level(family *f, const sq_mesh *base, int level, const sq_cli_args *a,
-                             sq_error *err)
+static sq_status add_level(family *f, const sq_mesh *base, int level, const sq_cli_args *a,
+                           sq_error *err)
 {
     int Q = sq_mesh_order(base);
     for (int k = 0; k < family_orders(a); k++) {
@@ -131,9 +125,9 @@ static sq_status write_level(family *f, const sq_mesh *base, int level, const sq
     return SQ_OK;
 }
 
-/* Each level refines the last (so the family is nested), then the
- * manifest, then the quality floor of every file. */
-static sq_status write_family(family *f, const sq_mesh *mesh, const sq_cli_args *a, sq_error *err)
+/* Every mesh first, each level refining the last (so the family is
+ * nested): a refusal (too many quads) leaves no file. */
+static sq_status make_family(family *f, const sq_mesh *mesh, const sq_cli_args *a, sq_error *err)
 {
     const sq_mesh *base = mesh;
     for (int l = 1; l <= family_levels(a); l++) {
@@ -141,11 +135,33 @@ static sq_status write_family(family *f, const sq_mesh *mesh, const sq_cli_args 
             SQ_TRY(sq_mesh_refine(base, 1, 0, &a->opt, &f->made[f->nmade], err));
             base = f->made[f->nmade++];
         }
-        SQ_TRY(write_level(f, base, l, a, err));
+        SQ_TRY(add_level(f, base, l, a, err));
+    }
+    return SQ_OK;
+}
+
+/* The files, one line each on stdout, the manifest, then the quality
+ * floor of every file. */
+static sq_status write_family(const family *f, const sq_cli_args *a, sq_error *err)
+{
+    for (int k = 0; k < f->n; k++) {
+        SQ_TRY(sq_mesh_write_format(f->mesh[k], f->file[k], a->format, err));
+        char *text = NULL;
+        SQ_TRY(sq_mesh_describe(f->mesh[k], &text, err));
+        if (!a->quiet) printf("%s: %s", f->file[k], text);
+        sq_free(text);
     }
     SQ_TRY(sq_mesh_family_write_manifest(a->manifest, f->n, f->mesh, (const char *const *)f->file,
                                          f->level, err));
-    for (int k = 0; k < f->n; k++) SQ_TRY(sq_mesh_check_quality(f->mesh[k], &a->opt, err));
+    for (int k = 0; k < f->n; k++) {
+        sq_status st = sq_mesh_check_quality(f->mesh[k], &a->opt, err);
+        if (st != SQ_OK) { /* name the file: the line alone names a quad */
+            char line[sizeof err->msg];
+            snprintf(line, sizeof line, "%s", err->msg);
+            return sq_error_set(err, st, __FILE__, __LINE__, __func__, "%s: %s", f->file[k],
+                                line);
+        }
+    }
     return SQ_OK;
 }
 
@@ -153,7 +169,8 @@ sq_status sq_cli_family_write(const sq_mesh *mesh, const sq_cli_args *a, sq_erro
 {
     family f;
     sq_status st = family_init(&f, a, err);
-    if (st == SQ_OK) st = write_family(&f, mesh, a, err);
+    if (st == SQ_OK) st = make_family(&f, mesh, a, err);
+    if (st == SQ_OK) st = write_family(&f, a, err);
     family_free(&f);
     return st;
 }
