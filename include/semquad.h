@@ -379,6 +379,37 @@ SQ_API sq_status sq_mesh_write_format(const sq_mesh *m, const char *path, const 
 /* 1 if sq_mesh_write knows path's format, else 0 (check before meshing). */
 SQ_API int sq_mesh_format_known(const char *path);
 
+/* ---- Mesh families for grid-convergence studies ------------------------ */
+
+/* A mesh of m's block layout (docs/convergence-families.md): every quad
+ * split 2 × 2, `levels` times (0: the same quads), then at order `order`
+ * (0: m's).  A child is the sub-map of its parent's own high-order map
+ * (so a curved quad's children keep its curve); a side on a CAD edge is
+ * placed on the curve instead, its new vertex at the arc length midway.
+ * Nested: every vertex of m is a vertex of *out with the same coordinates,
+ * bit for bit.  Nothing is relaxed again (that would move m's vertices);
+ * the quality is proven again, by the Bézier bounds (sq_mesh_scaled_jacobians,
+ * sq_mesh_check_quality).  SQ_ERR_USAGE when the quads would exceed
+ * opt->max_quads (opt NULL: the defaults).  *out borrows m's model, not m. */
+SQ_API sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const sq_options *opt,
+                                sq_mesh **out, sq_error *err);
+
+/* The mesh's sizes h: the mean (*mean) and largest (*max) straight
+ * distance between the two vertices of an element edge, each edge once. */
+SQ_API sq_status sq_mesh_edge_lengths(const sq_mesh *m, double *mean, double *max,
+                                      sq_error *err);
+
+/* The manifest of a family of n meshes of one face (docs/convergence-
+ * families.md): one JSON object, the input, the face's exact area and, per
+ * mesh, files[k], levels[k] (1: the mesh as made), its order, quads,
+ * nodes, degrees of freedom of a scalar CG field of its order (its nodes),
+ * h (sq_mesh_edge_lengths, and sqrt(area / quads)), area and least scaled
+ * Jacobian. */
+SQ_API sq_status sq_mesh_family_write_manifest(const char *path, int n,
+                                               const sq_mesh *const *meshes,
+                                               const char *const *files, const int *levels,
+                                               sq_error *err);
+
 /* ---- A convergence study of the field solvers ------------------------- */
 
 typedef struct sq_study sq_study;

@@ -6,7 +6,8 @@
 # against.  python3-numpy is what tests/cascade_aerofoil.py interpolates its
 # B-splines with at build time and what the semquad Python package
 # (python/) returns its arrays in, python3-meshio what Mesh.to_meshio
-# converts to; t960 runs the package.
+# converts to; t960 runs the package.  parallel (GNU parallel) runs batches
+# on one machine: scripts/mesh_parallel.sh, t906 (docs/scale-out.md).
 # Idempotent: quiet when everything is present; runs apt-get update only when
 # something is missing.
 set -eu
@@ -16,7 +17,7 @@ libocct-data-exchange-dev \
 libcgal-dev libgmp-dev libmpfr-dev \
 libgsl-dev liblapacke-dev libopenblas-dev libopenblas-serial-dev libsuitesparse-dev \
 librsvg2-bin \
-python3-gmsh gmsh python3-numpy python3-meshio"
+python3-gmsh gmsh python3-numpy python3-meshio parallel"
 missing=""
 for p in $PKGS; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then

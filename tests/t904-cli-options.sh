@@ -125,7 +125,7 @@ bash -n "$comp" || fail "the bash completion script does not parse"
 complete_words() { # WORD... : what completing the last word offers
     bash -c '. "$1"; shift; COMP_WORDS=("$@"); COMP_CWORD=$(($# - 1)); _semquad; echo "${COMPREPLY[*]}"' _ "$comp" "$@"
 }
-[ "$(complete_words semquad mesh --ord)" = "--order" ] || fail "completing mesh --ord: $(complete_words semquad mesh --ord)"
+[ "$(complete_words semquad mesh --ord)" = "--order --orders" ] || fail "completing mesh --ord: $(complete_words semquad mesh --ord)"
 [ "$(complete_words semquad mesh --road '')" = "auto layout split" ] || fail "completing mesh --road: $(complete_words semquad mesh --road '')"
 [ "$(complete_words semquad fi)" = "field" ] || fail "completing fi: $(complete_words semquad fi)"
 complete_words semquad field --fi | grep -q -- "--field-order" || fail "completing field --fi: $(complete_words semquad field --fi)"

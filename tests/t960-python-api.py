@@ -2,7 +2,8 @@
 examples, the same nodes and elements as `semquad mesh -o x.msh`; a bad
 file raises semquad.Error with status 3 and the command's message; bad
 option values raise status 2; Mesh.check_quality raises status 8 above a
-mesh's worst quad.  argv: semquad executable, examples dir;
+mesh's worst quad; Mesh.refine gives the command's --levels 2 file (same
+nodes and elements) and 4 times the quads.  argv: semquad executable, examples dir;
 env PYTHONPATH and SEMQUAD_LIBRARY point at the build tree."""
 import os
 import subprocess
@@ -131,6 +132,28 @@ with semquad.open(os.path.join(examples, "half_disc.step")) as model:
     except semquad.Error as e:
         if e.status != 8 or "worst quad %d," % mesh.scaled_jacobian.argmin() not in str(e):
             fail("check_quality(0.9): status %d (%s)" % (e.status, e))
+
+# a mesh family: Mesh.refine is `semquad mesh --levels 2`'s level 2
+with tempfile.TemporaryDirectory() as d, \
+        semquad.open(os.path.join(examples, "disc.step")) as model:
+    mesh = model.face().mesh(order=3)
+    fine = mesh.refine(1)
+    if len(fine.elements) != 4 * len(mesh.elements) or fine.order != 3:
+        fail("refine(1): %d quads of order %d" % (len(fine.elements), fine.order))
+    subprocess.run([exe, "mesh", os.path.join(examples, "disc.step"), "--order", "3",
+                    "--levels", "2", "-o", os.path.join(d, "f.msh"), "-q"], check=True)
+    nodes, quads = read_msh(os.path.join(d, "f_L2.msh"))
+    py = os.path.join(d, "py.msh")
+    fine.write(py)
+    pnodes, pquads = read_msh(py)
+    if not (np.array_equal(nodes, pnodes) and np.array_equal(quads, pquads)):
+        fail("refine(1) differs from the command's --levels 2 file")
+    try:
+        mesh.refine(3, max_quads=10)
+        fail("refine(3, max_quads=10) accepted")
+    except semquad.Error as e:
+        if e.status != 2:
+            fail("refine(3, max_quads=10): status %d (%s)" % (e.status, e))
 
 print("%d passed, %d failed" % (1 if not failures else 0, 1 if failures else 0))
 sys.exit(1 if failures else 0)

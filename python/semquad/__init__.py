@@ -105,6 +105,7 @@ def _load():
         "sq_mesh_eta": (ctypes.POINTER(D), [P]),
         "sq_mesh_report": (I, [P, PP, E]), "sq_mesh_describe": (I, [P, PP, E]),
         "sq_mesh_write": (I, [P, S, E]), "sq_mesh_check_quality": (I, [P, O, E]),
+        "sq_mesh_refine": (I, [P, I, I, O, PP, E]),
         "sq_face_field": (I, [P, I, O, PP, E]), "sq_field_free": (None, [PP]),
         "sq_field_num_singular_points": (I, [P]),
         "sq_field_singular_xy": (ctypes.POINTER(D), [P]),
@@ -456,6 +457,20 @@ class Mesh(_Handle):
         err = _Error()
         _check(_lib.sq_mesh_check_quality(self._handle(), ctypes.byref(o), ctypes.byref(err)), err)
         del keep
+
+    def refine(self, levels=1, order=None, max_quads=None):
+        """A mesh of this one's block layout for a convergence study
+        (docs/convergence-families.md): every quad split 2 x 2, `levels`
+        times (0: the same quads), at `order` (None: this mesh's).  Nested:
+        this mesh's vertices are nodes of the new one, bit for bit.  More
+        quads than max_quads (None: 2e7) raises Error with status 2."""
+        o, keep = _options(max_quads=max_quads)
+        h, err = ctypes.c_void_p(), _Error()
+        st = _serial(_lib.sq_mesh_refine, self._handle(), int(levels), int(order or 0),
+                     ctypes.byref(o), ctypes.byref(h), ctypes.byref(err))
+        del keep
+        _check(st, err)
+        return Mesh(h, self.model)
 
     def write(self, path):
         """Write .msh (Gmsh MSH 4.1, equispaced nodes), .xml (Nektar++),

@@ -49,7 +49,7 @@ struct sq_quad_layout {
 struct sq_mesh {
     sq_api_face face;
     sq_face_info info;
-    sq_layout_result r;   /* zeroed on the split road */
+    sq_layout_result r;   /* zeroed on the split road and in a refined mesh */
     sq_road_choice road;
     sq_quad_mesh *q;
     sq_quad_quality quality;
@@ -62,6 +62,13 @@ struct sq_mesh {
     int nbl;              /* boundary layers asked for (sq_options.nbl), for the blame */
     double origin[3], xdir[3], ydir[3];
 };
+
+/* The quality of h->q, per quad (the public arrays) and in sum: once per
+ * mesh made (face_mesh.c; mesh_family.c for refined meshes). */
+sq_status sq_api_mesh_quality(sq_mesh *h, sq_error *err);
+/* The plain arrays of the public accessors (the quality ones are made
+ * with the mesh: sq_api_mesh_quality). */
+sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err);
 
 /* Open face `face` of m (-1: the default face, logged as a note). */
 sq_status sq_api_face_open(const sq_model *m, int face, const sq_options *o, sq_api_face *f,

@@ -40,6 +40,10 @@ typedef struct {
     sq_cli_progress bar;   /* its state (opt.progress_data and opt.log_data point here) */
     int bl[SQ_CLI_MAX_LIST];        /* mesh --bl (opt.bl_edges points here) */
     double sizes[SQ_CLI_MAX_LIST];  /* converge --sizes (opt.study_sizes points here) */
+    int levels;                     /* mesh --levels L (0: one mesh) */
+    int orders[SQ_CLI_MAX_LIST];    /* mesh --orders Q1,Q2,... */
+    int norders;
+    const char *manifest;           /* mesh --manifest F (a family's; default STEM_manifest.json) */
     sq_options opt;        /* the library's options; its logger prints to stderr unless -q */
 } sq_cli_args;
 
@@ -198,6 +202,15 @@ void sq_cli_log(void *data, sq_log_level level, const char *line);
 sq_status sq_cli_progress_init(sq_cli_args *a, sq_error *err);
 void sq_cli_progress_event(void *data, const char *stage, long done, long total);
 void sq_cli_progress_clear(sq_cli_progress *p);
+
+/* mesh --levels/--orders (cmd_mesh_family.c): the family's file names
+ * from a->output's stem, checked before any work (the default manifest's
+ * name goes into manifest[n]); then, from the mesh as made (level 1),
+ * every file of the family and its manifest, one line per file on stdout;
+ * SQ_ERR_QUALITY if a file's worst quad is below the floor (after writing
+ * them all). */
+sq_status sq_cli_family_check(sq_cli_args *a, char *manifest, size_t n, sq_error *err);
+sq_status sq_cli_family_write(const sq_mesh *mesh, const sq_cli_args *a, sq_error *err);
 
 /* Check the options (a usage error before any work), then read a->input. */
 sq_status sq_cli_open(const sq_cli_args *a, sq_model **m, sq_error *err);

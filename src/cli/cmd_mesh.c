@@ -12,6 +12,11 @@ static sq_status parse_bl(const char *opt, const char *val, sq_cli_args *a, sq_e
     return sq_cli_int_list(opt, val, 0, 1000000, a->bl, SQ_CLI_MAX_LIST, &a->opt.nbl, err);
 }
 
+static sq_status parse_orders(const char *opt, const char *val, sq_cli_args *a, sq_error *err)
+{
+    return sq_cli_int_list(opt, val, 1, 10, a->orders, SQ_CLI_MAX_LIST, &a->norders, err);
+}
+
 /* The mesh file: -o, else <input stem>.<format> in the current directory
  * (name[n] holds it), none with --no-output; its format --format, else
  * -o's extension.  Checked before any work. */
@@ -37,13 +42,13 @@ static sq_status mesh_file(sq_cli_args *a, char *name, size_t n, sq_error *err)
     return sq_output_check(name, err);
 }
 
-/* The outputs -o, --svg and --report, in that order (the report's
- * timings include the writes). */
-static sq_status write_outputs(const sq_mesh *mesh, const sq_cli_args *a, int named,
+/* The outputs -o (unless a family replaces it), --svg and --report, in
+ * that order (the report's timings include the writes). */
+static sq_status write_outputs(const sq_mesh *mesh, const sq_cli_args *a, int named, int family,
                                sq_error *err)
 {
-    if (a->output) SQ_TRY(sq_mesh_write_format(mesh, a->output, a->format, err));
-    if (a->output && !named && !a->quiet)
+    if (a->output && !family) SQ_TRY(sq_mesh_write_format(mesh, a->output, a->format, err));
+    if (a->output && !named && !a->quiet && !family)
         fprintf(stderr, "semquad: note: no -o given: wrote %s\n", a->output);
     if (a->svg) SQ_TRY(sq_mesh_write(mesh, a->svg, err));
     if (a->report) SQ_TRY(sq_mesh_write_report(mesh, a->report, err));
@@ -52,16 +57,18 @@ static sq_status write_outputs(const sq_mesh *mesh, const sq_cli_args *a, int na
 
 static sq_status run_mesh(sq_cli_args *a, sq_error *err)
 {
-    char name[4096];
-    int named = a->output != NULL;
+    char name[4096], manifest[4096];
+    int named = a->output != NULL, family = a->levels > 0 || a->norders > 0;
     SQ_TRY(mesh_file(a, name, sizeof name, err));
+    SQ_TRY(sq_cli_family_check(a, manifest, sizeof manifest, err));
     sq_model *m = NULL;
     SQ_TRY(sq_cli_open(a, &m, err));
     sq_mesh *mesh = NULL;
     sq_status st = sq_face_mesh(m, a->face, &a->opt, &mesh, err);
-    if (st == SQ_OK) st = write_outputs(mesh, a, named, err);
+    if (st == SQ_OK) st = write_outputs(mesh, a, named, family, err);
+    if (st == SQ_OK && family) st = sq_cli_family_write(mesh, a, err);
     char *text = NULL;
-    if (st == SQ_OK && !a->quiet) st = sq_cli_print(sq_mesh_describe(mesh, &text, err), &text, a);
+    if (st == SQ_OK && !a->quiet && !family) st = sq_cli_print(sq_mesh_describe(mesh, &text, err), &text, a);
     /* below the floor: written all the same, then the status */
     if (st == SQ_OK) st = sq_mesh_check_quality(mesh, &a->opt, err);
     sq_mesh_free(&mesh);
@@ -112,6 +119,18 @@ static const sq_cli_opt mesh_opts[] = {
      .help = "a mesh whose worst quad's scaled Jacobian (min det J / max det J, proven by Bezier "
              "bounds) is below X is written, then the run exits 8 naming that quad; 0: no floor",
      .target = SQ_CLI_AT(opt.min_quality)},
+    {.name = "levels", .kind = SQ_CLI_INT, .value = "L", .lo = 1, .hi = 10,
+     .def = "none (one mesh)",
+     .help = "a nested family for convergence studies: STEM_L1.msh (the mesh) .. STEM_LL.msh, "
+             "every quad of a level split 2 x 2 in the next (STEM: -o without extension)",
+     .target = SQ_CLI_AT(levels)},
+    {.name = "orders", .kind = SQ_CLI_CUSTOM, .value = "Q1,Q2,...", .def = "none",
+     .help = "the same quads at each order (1..10): STEM_Q4.msh ..; with --levels STEM_L2_Q4.msh ..",
+     .parse = parse_orders},
+    {.name = "manifest", .kind = SQ_CLI_OUTPUT, .value = "FILE",
+     .def = "STEM_manifest.json with --levels or --orders",
+     .help = "the family's files with level, order, h, quads, nodes, dofs, area (JSON)",
+     .target = SQ_CLI_AT(manifest)},
     SQ_CLI_OPT_SVG("a picture of the mesh, coloured by quality"),
     SQ_CLI_OPT_REPORT,
     SQ_CLI_OPT_PROGRESS,

@@ -14,7 +14,7 @@ void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, i
     sq_json j;
     sq_json_init(&j, fp);
     sq_json_begin_object(&j);
-    int by_layout = !strcmp(road->name, "layout");
+    int by_layout = !strcmp(road->name, "layout") && r->info; /* not a refined mesh */
     if (by_layout) {
         sq_json_layout_head(&j, input, face, r);
     } else {

@@ -25,7 +25,7 @@ typedef struct {
 
 /* model: the file read, for the face's "healing" key; info: the face; r:
  * the layout road's result (its field and layout keys are written when
- * the road is "layout") */
+ * the road is "layout" and r holds them: a refined mesh's r is zeroed) */
 sq_status sq_write_mesh_report(const char *path, const char *input, const cad_model *model,
                                int face, const sq_face_info *info, const sq_road_choice *road,
                                const sq_layout_result *r, const sq_quad_mesh *m,

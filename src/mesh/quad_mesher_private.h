@@ -105,5 +105,14 @@ sq_status qm_relax(const cad_face *face, const sq_face_info *info, qm_vmesh *v, 
 
 sq_status qm_raise_order(const cad_face *face, const qm_vmesh *v, int Q, sq_node_kind kind,
                          const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err);
+/* Arc lengths *s0, *s1 on CAD edge `tag` of the ends A, B of a side
+ * walked from A to B (`along`: in the curve's direction of travel), one
+ * continued past a closed curve's closing point so that s0 + t (s1 - s0),
+ * t in [0, 1], runs along the side (quad_refine.c uses them too). */
+sq_status qm_side_arcs(const cad_face *face, int tag, const double A[2], const double B[2],
+                       int along, double *s0, double *s1, sq_error *err);
+/* The point of CAD edge `tag` at arc length s, s past the length wrapped
+ * round a closed curve. */
+sq_status qm_curve_point(const cad_face *face, int tag, double s, double xy[2], sq_error *err);
 
 #endif

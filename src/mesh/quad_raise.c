@@ -24,13 +24,27 @@ static sq_status sub_fractions(int Q, sq_node_kind kind, double *tau, sq_error *
     return SQ_OK;
 }
 
-/* Arc length of vertex x on CAD edge c, continued across the closing point
- * of a closed edge towards s_ref. */
-static sq_status arc_on_edge(const cad_face *face, int c, const double x[2], double *s,
-                             sq_error *err)
+sq_status qm_side_arcs(const cad_face *face, int tag, const double A[2], const double B[2],
+                       int along, double *s0, double *s1, sq_error *err)
 {
-    SQ_TRY(cad_face_edge_project(face, c, x, s, NULL, NULL, err));
+    SQ_TRY(cad_face_edge_project(face, tag, A, s0, NULL, NULL, err));
+    SQ_TRY(cad_face_edge_project(face, tag, B, s1, NULL, NULL, err));
+    /* the quad walks its boundary side along the curve's direction of
+     * travel (both keep the face on the left): arc lengths that decrease
+     * that way cross a closed curve's closing point.  (Not "the shorter
+     * way round": a side may cover half a curve or more, a short edge
+     * taken whole by one quad.) */
+    double Lc = cad_face_edge_length(face, tag);
+    if (along && *s1 < *s0) *s1 += Lc;
+    else if (!along && *s0 < *s1) *s0 += Lc;
     return SQ_OK;
+}
+
+sq_status qm_curve_point(const cad_face *face, int tag, double s, double xy[2], sq_error *err)
+{
+    double Lc = cad_face_edge_length(face, tag);
+    if (s > Lc) s -= Lc;
+    return cad_face_edge_eval(face, tag, s, xy, NULL, NULL, err);
 }
 
 /* The Q+1 nodes P of a side from vertex A to vertex B: on CAD edge `tag`
@@ -43,19 +57,7 @@ static sq_status side_nodes(const cad_face *face, const sq_mesher_options *opt, 
 {
     sq_status st = SQ_OK;
     double s0 = 0.0, s1 = 0.0;
-    if (tag >= 0) {
-        st = arc_on_edge(face, tag, A, &s0, err);
-        if (st == SQ_OK) st = arc_on_edge(face, tag, B, &s1, err);
-        /* the quad walks its boundary side along the curve's
-         * direction of travel (both keep the face on the left):
-         * arc lengths that decrease that way cross a closed
-         * curve's closing point.  (Not "the shorter way round":
-         * a side may cover half a curve or more, a short edge
-         * taken whole by one quad.) */
-        double Lc = cad_face_edge_length(face, tag);
-        if (along && s1 < s0) s1 += Lc;
-        else if (!along && s0 < s1) s0 += Lc;
-    }
+    if (tag >= 0) st = qm_side_arcs(face, tag, A, B, along, &s0, &s1, err);
     int lc = -1;
     double ls0 = 0.0, ls1 = 0.0, ld0 = 0.0, ld1 = 0.0;
     int layer = tag < 0 && opt->nbl > 0 &&
@@ -70,9 +72,7 @@ static sq_status side_nodes(const cad_face *face, const sq_mesher_options *opt, 
             P[2 * i] = X[0] - d * t[1];
             P[2 * i + 1] = X[1] + d * t[0];
         } else if (tag >= 0 && i > 0 && i < Q) {
-            double s = s0 + tau[i] * (s1 - s0), Lc = cad_face_edge_length(face, tag);
-            if (s > Lc) s -= Lc;
-            st = cad_face_edge_eval(face, tag, s, &P[2 * i], NULL, NULL, err);
+            st = qm_curve_point(face, tag, s0 + tau[i] * (s1 - s0), &P[2 * i], err);
         } else {
             P[2 * i] = A[0] + tau[i] * (B[0] - A[0]);
             P[2 * i + 1] = A[1] + tau[i] * (B[1] - A[1]);
