@@ -43,6 +43,7 @@ struct sem_locator {
 };
 
 const sem_tri_mesh *sem_locator_mesh(const sem_locator *loc) { return loc->mesh; }
+const double *sem_locator_modal_geometry(const sem_locator *loc) { return loc->gm; }
 
 double sem_locator_map(const sem_locator *loc, int e, double r, double s, double x[2],
                        double jac[4])

@@ -15,6 +15,7 @@ void sq_h_field_free(sq_h_field *h)
     free(h->xy);
     free(h->c);
     sem_field_evaluator_free(&h->ev);
+    sem_poisson_free(&h->solver);
     sem_field_free(&h->hr);
     memset(h, 0, sizeof *h);
 }
@@ -119,7 +120,6 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
     out->xy = malloc(sizeof(double) * (2 * (size_t)npoints + 1));
     out->c = malloc(sizeof(double) * ((size_t)npoints + 1));
     sem_point_source *ps = malloc(sizeof *ps * ((size_t)info->nvertices + 1));
-    sem_poisson *solver = NULL;
     sem_tri_quad *quad = NULL;
     sq_status st = SQ_OK;
     if (!out->xy || !out->c || !ps) {
@@ -164,12 +164,13 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
     out->imbalance = ig + ssum;
     out->data_size = iabs + sabs;
     b.gshift = out->imbalance / len; /* the quadrature residue, spread evenly */
-    if ((st = sem_poisson_create(mesh, order, SEM_CG, all_neumann, NULL, &solver, err)) != SQ_OK)
+    if ((st = sem_poisson_create(mesh, order, SEM_CG, all_neumann, NULL, &out->solver, err)) !=
+        SQ_OK)
         goto done;
-    out->ndofs = sem_poisson_ndofs(solver);
+    out->ndofs = sem_poisson_ndofs(out->solver);
     if ((st = sem_field_create(mesh, order, 1, &out->hr, err)) != SQ_OK) goto done;
     sem_poisson_data data = {NULL, NULL, hr_flux, &b, nps, ps};
-    if ((st = sem_poisson_solve(solver, &data, out->hr, err)) != SQ_OK) {
+    if ((st = sem_poisson_solve(out->solver, &data, out->hr, err)) != SQ_OK) {
         /* the solver's own quadrature of the data found them unbalanced:
          * a property of this pattern on this face, not a usage error */
         if (st == SQ_ERR_USAGE && err) {
@@ -197,7 +198,6 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
     out->shift = -ihs / area;
 done:
     free(ps);
-    sem_poisson_free(&solver);
     sem_tri_quad_free(&quad);
     if (st != SQ_OK) sq_h_field_free(out);
     return st;

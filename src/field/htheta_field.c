@@ -239,6 +239,7 @@ sq_status sq_htheta_compute(const cad_face *face, const sq_pattern *pattern,
     if ((st = sq_theta_field_solve(face, m, out->loc, &out->h, out->vloops, out->nloops, sing,
                                    &out->theta, err)) != SQ_OK)
         goto done;
+    sem_poisson_free(&out->h.solver); /* θ's solver had what it needed */
     for (int j = 0; j < np; j++)
         out->points[j].jump = sq_theta_jump_around_vertex(&out->theta, sing[j]);
     st = loop_checks(face, out, err);
