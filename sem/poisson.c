@@ -75,6 +75,10 @@ void sem_poisson_free(sem_poisson **s)
 }
 
 long sem_poisson_ndofs(const sem_poisson *s) { return s ? s->ops->ndofs(s->state) : 0; }
+sem_poisson_work sem_poisson_work_done(const sem_poisson *s)
+{
+    return s ? s->ops->work(s->state) : (sem_poisson_work){0, 0};
+}
 int sem_poisson_order(const sem_poisson *s) { return s ? s->P : 0; }
 sem_method sem_poisson_method(const sem_poisson *s) { return s ? s->method : SEM_CG; }
 

@@ -49,6 +49,14 @@ typedef struct {
 
 typedef struct sem_poisson sem_poisson; /* opaque: assembled, factored */
 
+/* The work a solver's creation did, counted where it was done: element
+ * stiffness matrices computed (none when copied: sem_poisson_create_like)
+ * and sparse factorizations (none for a system without free unknowns). */
+typedef struct {
+    long element_matrices;
+    int factorizations;
+} sem_poisson_work;
+
 /* Assemble and factor (CHOLMOD).  kind may be NULL: all Dirichlet.
  * The mesh is borrowed and must outlive the solver. */
 sq_status sem_poisson_create(const sem_tri_mesh *mesh, int P, sem_method method,
@@ -70,6 +78,7 @@ void sem_poisson_free(sem_poisson **s); /* NULL-safe, NULLs *s */
 /* Number of global unknowns (after static condensation for CG, the global
  * count before condensation is what is reported: all modes of the space). */
 long sem_poisson_ndofs(const sem_poisson *s);
+sem_poisson_work sem_poisson_work_done(const sem_poisson *s); /* zeros for NULL */
 int sem_poisson_order(const sem_poisson *s);
 sem_method sem_poisson_method(const sem_poisson *s);
 

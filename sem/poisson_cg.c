@@ -71,6 +71,7 @@ typedef struct {
     long nfree, ndir;
     int pure_neumann;
     sem_sparse *A;
+    sem_poisson_work work;
 } cg_state;
 
 static void cg_free(void *state)
@@ -105,6 +106,7 @@ static void cg_free(void *state)
 }
 
 static long cg_ndofs(const void *state) { return ((const cg_state *)state)->space->ndofs; }
+static sem_poisson_work cg_work(const void *state) { return ((const cg_state *)state)->work; }
 
 /* Position, Jacobian (x_r, x_s, y_r, y_s) and det at volume point k. */
 static double cg_geom_at(const cg_state *c, const double *gxy, int k, double x[2], double J[4])
@@ -230,7 +232,7 @@ static sq_status cg_element(const cg_state *c, int t, const double *Sref, double
 
 static sq_status cg_solve(void *state, const sem_poisson_data *data, sem_field *u, sq_error *err);
 
-static const sem_poisson_ops cg_ops = {cg_solve, cg_free, cg_ndofs};
+static const sem_poisson_ops cg_ops = {cg_solve, cg_free, cg_ndofs, cg_work};
 
 /* x copied into a new array of n doubles (n + 1: never a zero-size malloc) */
 static double *cg_dup(const double *x, size_t n)
@@ -422,6 +424,7 @@ static sq_status cg_elements(cg_state *c, sq_error *err)
     for (int t = 0; t < nt && st == SQ_OK; ++t) {
         double *mv = c->mloc + (size_t)t * n;
         if ((st = cg_element(c, t, Sref, K, mv, work, err)) != SQ_OK) break;
+        c->work.element_matrices++;
         for (int i = 0; i < 3; ++i) c->area += mv[i];
         /* Static condensation (K&S §4.1.6): S = Kbb - Kbi Kii^-1 Kib. */
         double *S = c->S + (size_t)t * nb * nb;
@@ -483,7 +486,9 @@ static sq_status cg_assemble(cg_state *c, sq_error *err)
             }
         }
     }
-    return sem_sparse_factor(c->A, err);
+    SQ_TRY(sem_sparse_factor(c->A, err));
+    c->work.factorizations++;
+    return SQ_OK;
 }
 
 sq_status sem_poisson_cg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn kind,

@@ -10,6 +10,7 @@ typedef struct {
     sq_status (*solve)(void *state, const sem_poisson_data *data, sem_field *u, sq_error *err);
     void (*free)(void *state);
     long (*ndofs)(const void *state);
+    sem_poisson_work (*work)(const void *state);
 } sem_poisson_ops;
 
 /* Each returns its ops table and a new state (NULL on failure). */

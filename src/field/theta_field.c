@@ -142,6 +142,7 @@ sq_status sq_theta_field_solve(const cad_face *face, const sem_tri_mesh *mesh,
     if ((st = sem_poisson_create_like(h->solver, cm, all_neumann, NULL, &solver, err)) != SQ_OK)
         goto done;
     out->ndofs = sem_poisson_ndofs(solver);
+    out->work = sem_poisson_work_done(solver);
     if ((st = sem_field_create(cm, h->order, 1, &out->tr, err)) != SQ_OK) goto done;
     tdata d = {out, loc, 0};
     sem_poisson_data data = {NULL, NULL, tr_flux, &d, 0, NULL};
