@@ -171,6 +171,17 @@ def fmt_row(name, tool, st, wall, rss, extra=""):
         wall, rss / 1024.0, extra)
 
 
+def both_meshed(results, ncols):
+    """(name, semquad's result, Gmsh's) of the examples both meshed; a row of
+    ncols n/a for the others."""
+    for name, r in results.items():
+        sq, g = r["semquad"], r["gmsh"]
+        if "error" in sq or "error" in g:
+            print("| %s | %s |" % (name, " | ".join(["n/a"] * ncols)))
+            continue
+        yield name, sq, g
+
+
 # ---------------------------------------------------------------- main
 def main():
     if len(sys.argv) > 1 and sys.argv[1] == "--gmsh-child":
@@ -321,11 +332,7 @@ def main():
     # targets
     print("| example | fewer irregular | better η_w | process ≤ Gmsh process | in-process ≤ Gmsh in-process |")
     print("|---|---|---|---|---|")
-    for name, r in results.items():
-        sq, g = r["semquad"], r["gmsh"]
-        if "error" in sq or "error" in g:
-            print("| %s | %s |" % (name, " | ".join(["n/a"] * 4)))
-            continue
+    for name, sq, g in both_meshed(results, 4):
         s, t = sq["quadstats"], g["quadstats"]
         yn = lambda b: "yes" if b else "**no**"
         print("| %s | %s (%d vs %d) | %s (%.3f vs %.3f) | %s (%.3f vs %.3f) | %s (%.3f vs %.3f) |" % (
@@ -339,11 +346,7 @@ def main():
     print("| example | semquad field | semquad mesh (ms) | µs/quad | Gmsh generate (ms) | µs/quad "
           "| ratio per quad |")
     print("|---|---|---|---|---|---|---|")
-    for name, r in results.items():
-        sq, g = r["semquad"], r["gmsh"]
-        if "error" in sq or "error" in g:
-            print("| %s | %s |" % (name, " | ".join(["n/a"] * 6)))
-            continue
+    for name, sq, g in both_meshed(results, 6):
         us = 1e6 * sq["mesh_s"] / sq["quadstats"]["quads"]
         ug = 1e6 * g["generate_s"] / g["quadstats"]["quads"]
         print("| %s | %s | %.1f | %.1f | %.1f | %.1f | %.2f |" % (
