@@ -171,6 +171,17 @@ def fmt_row(name, tool, st, wall, rss, extra=""):
         wall, rss / 1024.0, extra)
 
 
+def both_meshed(results, ncols):
+    """(name, semquad's result, Gmsh's) of the examples both meshed; a row of
+    ncols n/a for the others."""
+    for name, r in results.items():
+        sq, g = r["semquad"], r["gmsh"]
+        if "error" in sq or "error" in g:
+            print("| %s | %s |" % (name, " | ".join(["n/a"] * ncols)))
+            continue
+        yield name, sq, g
+
+
 # ---------------------------------------------------------------- main
 def main():
     if len(sys.argv) > 1 and sys.argv[1] == "--gmsh-child":
@@ -212,7 +223,7 @@ def main():
         name = os.path.basename(f)[:-5]
         r = results[name] = {}
         sq_msh, sq_rep = os.path.join(tmp, name + ".semquad.msh"), os.path.join(tmp, name + ".json")
-        walls, inproc, rss, err = [], [], 0, None
+        walls, inproc, meshing, rss, err = [], [], [], 0, None
         for _ in range(a.runs):
             rc, _, se, wall, m = timed([SEMQUAD, "mesh", f, "--order", "1", "--size", repr(a.size),
                                         "-o", sq_msh, "--report", sq_rep, "-q"])
@@ -220,13 +231,16 @@ def main():
                 err = "exit %d: %s" % (rc, last_err(se))
                 break
             walls.append(wall)
-            inproc.append(json.load(open(sq_rep))["timings_s"]["total"])
+            t = json.load(open(sq_rep))["timings_s"]
+            inproc.append(t["total"])
+            meshing.append(t["total"] - t.get("read", 0.0) - t.get("write", 0.0))
             rss = max(rss, m)
         sq_st = None if err else quadstats(a.quadstats, sq_msh)
+        rep = None if err else json.load(open(sq_rep))
         r["semquad"] = {"error": err} if err else {
-            "wall_s": med(walls), "in_process_s": med(inproc), "max_rss_kib": rss,
-            "quadstats": sq_st,
-            "report_timings_s": json.load(open(sq_rep)).get("timings_s")}
+            "wall_s": med(walls), "in_process_s": med(inproc), "mesh_s": med(meshing),
+            "field": rep.get("field", {}).get("kind", "?"), "max_rss_kib": rss,
+            "quadstats": sq_st, "report_timings_s": rep.get("timings_s")}
         # Gmsh: calibrate on semquad's quad count (or on its own size if semquad failed)
         g_msh = os.path.join(tmp, name + ".gmsh.msh")
         log = []
@@ -241,7 +255,7 @@ def main():
         else:
             if gerr:
                 note = gerr
-            gw, gin, gload, gexe, grss, gfail = [], [], [], [], 0, None
+            gw, gin, ggen, gload, gexe, grss, gfail = [], [], [], [], [], 0, None
             for _ in range(a.runs):
                 rc, info, wall, m, se = run_gmsh_once(f, g_msh, a.size, factor, a.recombination)
                 if rc != 0:
@@ -249,6 +263,7 @@ def main():
                     break
                 gw.append(wall)
                 gin.append(info["in_process"])
+                ggen.append(info["mesh"])
                 gload.append(info["import_init"] + info["in_process"])
                 grss = max(grss, m)
                 if GMSH_EXE:
@@ -270,7 +285,7 @@ def main():
                     process, prss, how = med([w for w, _ in gexe]), max(m for _, m in gexe), "exe"
                 else:
                     process, prss, how = med(gload), grss, "python load+run"
-                r["gmsh"] = {"wall_s": med(gw), "in_process_s": med(gin),
+                r["gmsh"] = {"wall_s": med(gw), "in_process_s": med(gin), "generate_s": med(ggen),
                              "load_and_run_s": med(gload), "process_s": process,
                              "process_max_rss_kib": prss, "process_how": how,
                              "max_rss_kib": grss,
@@ -317,11 +332,7 @@ def main():
     # targets
     print("| example | fewer irregular | better η_w | process ≤ Gmsh process | in-process ≤ Gmsh in-process |")
     print("|---|---|---|---|---|")
-    for name, r in results.items():
-        sq, g = r["semquad"], r["gmsh"]
-        if "error" in sq or "error" in g:
-            print("| %s | %s |" % (name, " | ".join(["n/a"] * 4)))
-            continue
+    for name, sq, g in both_meshed(results, 4):
         s, t = sq["quadstats"], g["quadstats"]
         yn = lambda b: "yes" if b else "**no**"
         print("| %s | %s (%d vs %d) | %s (%.3f vs %.3f) | %s (%.3f vs %.3f) | %s (%.3f vs %.3f) |" % (
@@ -329,6 +340,17 @@ def main():
             t["interior_irregular"], yn(s["eta_min"] > t["eta_min"]), s["eta_min"], t["eta_min"],
             yn(sq["wall_s"] <= g["process_s"]), sq["wall_s"], g["process_s"],
             yn(sq["in_process_s"] <= g["in_process_s"]), sq["in_process_s"], g["in_process_s"]))
+    print()
+    # meshing alone, per quad: semquad's timings_s.total minus read and write
+    # against Gmsh's generate, and which field each example's layout took
+    print("| example | semquad field | semquad mesh (ms) | µs/quad | Gmsh generate (ms) | µs/quad "
+          "| ratio per quad |")
+    print("|---|---|---|---|---|---|---|")
+    for name, sq, g in both_meshed(results, 6):
+        us = 1e6 * sq["mesh_s"] / sq["quadstats"]["quads"]
+        ug = 1e6 * g["generate_s"] / g["quadstats"]["quads"]
+        print("| %s | %s | %.1f | %.1f | %.1f | %.1f | %.2f |" % (
+            name, sq["field"], 1e3 * sq["mesh_s"], us, 1e3 * g["generate_s"], ug, us / ug))
     print()
     if a.json:
         with open(a.json, "w") as fh:

@@ -16,14 +16,13 @@ struct sem_field_evaluator {
     int nf, ng;          /* field and geometry modes */
     int same;            /* tab order == P: field modes in place */
     int fidx[SEM_MAX_MODES], gidx[SEM_MAX_MODES]; /* positions in the tab numbering */
-    double *gm;          /* 2*ng*ntris modal geometry */
+    const double *gm;    /* 2*ng*ntris modal geometry: the locator's */
 };
 
 void sem_field_evaluator_free(sem_field_evaluator **ev)
 {
     if (!ev || !*ev) return;
     sem_locator_free(&(*ev)->own);
-    free((*ev)->gm);
     free(*ev);
     *ev = NULL;
 }
@@ -37,7 +36,7 @@ sq_status sem_field_evaluator_create(const sem_field *f, const sem_locator *loc,
     *out = NULL;
     if (!f || !f->mesh || f->P < 0 || f->P > SEM_MAX_ORDER)
         return SQ_FAIL(err, SQ_ERR_USAGE, "field_evaluator_create: bad field");
-    if (loc && sem_locator_mesh(loc) != f->mesh)
+    if (loc && !sem_tri_mesh_same_elements(sem_locator_mesh(loc), f->mesh))
         return SQ_FAIL(err, SQ_ERR_USAGE, "field_evaluator_create: locator of another mesh");
     sem_field_evaluator *E = calloc(1, sizeof *E);
     if (!E) return SQ_FAIL(err, SQ_ERR_INTERNAL, "field_evaluator_create: out of memory");
@@ -53,17 +52,17 @@ sq_status sem_field_evaluator_create(const sem_field *f, const sem_locator *loc,
             if (p + q <= P) E->fidx[sem_tri_node_index(P, p, q)] = sem_tri_node_index(T, p, q);
             if (p + q <= go) E->gidx[sem_tri_node_index(go, p, q)] = sem_tri_node_index(T, p, q);
         }
-    if ((st = sem_modal_geometry(f->mesh, &E->gm, err)) != SQ_OK) goto fail;
     if (!loc) {
-        if ((st = sem_locator_create(f->mesh, &E->own, err)) != SQ_OK) goto fail;
+        if ((st = sem_locator_create(f->mesh, &E->own, err)) != SQ_OK) {
+            sem_field_evaluator_free(&E);
+            return st;
+        }
         loc = E->own;
     }
     E->loc = loc;
+    E->gm = sem_locator_modal_geometry(loc);
     *out = E;
     return SQ_OK;
-fail:
-    sem_field_evaluator_free(&E);
-    return st;
 }
 
 void sem_field_evaluator_eval_ref(const sem_field_evaluator *E, int e, double r, double s,

@@ -43,6 +43,7 @@ struct sem_locator {
 };
 
 const sem_tri_mesh *sem_locator_mesh(const sem_locator *loc) { return loc->mesh; }
+const double *sem_locator_modal_geometry(const sem_locator *loc) { return loc->gm; }
 
 double sem_locator_map(const sem_locator *loc, int e, double r, double s, double x[2],
                        double jac[4])
@@ -109,6 +110,40 @@ void sem_locator_free(sem_locator **loc)
 
 static int clampi(long v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : (int)v; }
 
+/* The geometry's modes and derivatives (3 ngm per point) at the points
+ * (i, j)/ns, i + j <= ns, of the lattice of order ns = 2 go + 2 that samples
+ * curved elements: tabulated once for all of them. */
+static double *lattice_modes(const sem_locator *L)
+{
+    const int ns = 2 * L->go + 2, ngm = L->ngm;
+    double *lat = malloc(sizeof(double) * 3 * (size_t)ngm * sem_tri_num_nodes(ns));
+    if (!lat) return NULL;
+    double *t = lat;
+    for (int j = 0; j <= ns; ++j)
+        for (int i = 0; i + j <= ns; ++i, t += 3 * ngm)
+            sem_dubiner_tab_eval(&L->tab, (double)i / ns, (double)j / ns, t, t + ngm, t + 2 * ngm);
+    return lat;
+}
+
+/* Grow box b by element e's map on the lattice (sem_locator_map's sums);
+ * nonzero if a point is not finite. */
+static int curved_box(const sem_locator *L, int e, const double *lat, int nlat, double b[4])
+{
+    const int ngm = L->ngm;
+    const double *gm = L->gm + 2 * (size_t)ngm * e;
+    for (int k = 0; k < nlat; ++k) {
+        const double *t = lat + 3 * (size_t)ngm * k;
+        double x[2];
+        sem_modal_map(ngm, gm, t, t + ngm, t + 2 * ngm, x, NULL);
+        if (!(isfinite(x[0]) && isfinite(x[1]))) return 1;
+        b[0] = fmin(b[0], x[0]);
+        b[1] = fmax(b[1], x[0]);
+        b[2] = fmin(b[2], x[1]);
+        b[3] = fmax(b[3], x[1]);
+    }
+    return 0;
+}
+
 sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_error *err)
 {
     if (!out) return SQ_FAIL(err, SQ_ERR_USAGE, "locator_create: NULL output");
@@ -118,6 +153,7 @@ sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_err
     sem_locator *L = calloc(1, sizeof *L);
     if (!L) return SQ_FAIL(err, SQ_ERR_INTERNAL, "locator_create: out of memory");
     sq_status st;
+    double *lat = NULL;
     L->mesh = mesh;
     L->go = mesh->order;
     L->ngm = sem_tri_num_nodes(L->go);
@@ -130,7 +166,11 @@ sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_err
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "locator_create: out of memory (%d elements)", nt);
         goto fail;
     }
-    const int ns = 2 * L->go + 2; /* sample lattice of curved elements */
+    const int nlat = sem_tri_num_nodes(2 * L->go + 2); /* sample lattice of curved elements */
+    if (!(lat = lattice_modes(L))) {
+        st = SQ_FAIL(err, SQ_ERR_INTERNAL, "locator_create: out of memory");
+        goto fail;
+    }
     double bx0 = HUGE_VAL, bx1 = -HUGE_VAL, by0 = HUGE_VAL, by1 = -HUGE_VAL;
     for (int e = 0; e < nt; ++e) {
         double *b = L->ebox + 4 * (size_t)e;
@@ -167,20 +207,11 @@ sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_err
             a[5] = J[0] / det;
             L->is_aff[e] = 1;
         } else {
-            for (int j = 0; j <= ns; ++j)
-                for (int i = 0; i + j <= ns; ++i) {
-                    double x[2];
-                    sem_locator_map(L, e, (double)i / ns, (double)j / ns, x, NULL);
-                    if (!(isfinite(x[0]) && isfinite(x[1]))) {
-                        st = SQ_FAIL(err, SQ_ERR_USAGE,
-                                     "locator_create: element %d has non-finite nodes", e);
-                        goto fail;
-                    }
-                    b[0] = fmin(b[0], x[0]);
-                    b[1] = fmax(b[1], x[0]);
-                    b[2] = fmin(b[2], x[1]);
-                    b[3] = fmax(b[3], x[1]);
-                }
+            if (curved_box(L, e, lat, nlat, b)) {
+                st = SQ_FAIL(err, SQ_ERR_USAGE, "locator_create: element %d has non-finite nodes",
+                             e);
+                goto fail;
+            }
             /* Newton's start: the straight-sided triangle through the vertices */
             const double j0 = xv[1][0] - xv[0][0], j1 = xv[2][0] - xv[0][0],
                          j2 = xv[1][1] - xv[0][1], j3 = xv[2][1] - xv[0][1], d = j0 * j3 - j1 * j2;
@@ -199,6 +230,8 @@ sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_err
         by0 = fmin(by0, b[2]);
         by1 = fmax(by1, b[3]);
     }
+    free(lat);
+    lat = NULL;
     /* grid of about one cell per element */
     const double W = bx1 - bx0, H = by1 - by0;
     L->nx = clampi(lround(ceil(sqrt((double)nt * W / H))), 1, 4096);
@@ -246,6 +279,7 @@ sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_err
     *out = L;
     return SQ_OK;
 fail:
+    free(lat);
     sem_locator_free(&L);
     return st;
 }

@@ -25,6 +25,9 @@ typedef struct sem_locator sem_locator; /* opaque */
 sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_error *err);
 void sem_locator_free(sem_locator **loc); /* NULL-safe, NULLs *loc */
 const sem_tri_mesh *sem_locator_mesh(const sem_locator *loc);
+/* The modal geometry of the mesh's elements (sem_modal_geometry, dg_modal.h),
+ * owned by the locator. */
+const double *sem_locator_modal_geometry(const sem_locator *loc);
 
 /* Locate xy: returns 0 and sets *elem, *r, *s if the point is in the mesh,
  * 1 if it is outside (outputs untouched).  hint: an element near xy (the

@@ -43,6 +43,29 @@ sq_status sem_poisson_create(const sem_tri_mesh *mesh, int P, sem_method method,
     return SQ_OK;
 }
 
+sq_status sem_poisson_create_like(const sem_poisson *src, const sem_tri_mesh *mesh,
+                                  sem_bc_kind_fn kind, void *kind_ctx, sem_poisson **out,
+                                  sq_error *err)
+{
+    if (!out) return SQ_FAIL(err, SQ_ERR_USAGE, "poisson_create_like: NULL output");
+    *out = NULL;
+    if (!src || src->method != SEM_CG)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "poisson_create_like: needs a CG solver");
+    sem_poisson *p = calloc(1, sizeof *p);
+    if (!p) return SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_create_like: out of memory");
+    p->mesh = mesh;
+    p->P = src->P;
+    p->method = SEM_CG;
+    sq_status st =
+        sem_poisson_cg_create_like(src->state, mesh, kind, kind_ctx, &p->ops, &p->state, err);
+    if (st != SQ_OK) {
+        free(p);
+        return st;
+    }
+    *out = p;
+    return SQ_OK;
+}
+
 void sem_poisson_free(sem_poisson **s)
 {
     if (!s || !*s) return;
@@ -52,6 +75,10 @@ void sem_poisson_free(sem_poisson **s)
 }
 
 long sem_poisson_ndofs(const sem_poisson *s) { return s ? s->ops->ndofs(s->state) : 0; }
+sem_poisson_work sem_poisson_work_done(const sem_poisson *s)
+{
+    return s ? s->ops->work(s->state) : (sem_poisson_work){0, 0};
+}
 int sem_poisson_order(const sem_poisson *s) { return s ? s->P : 0; }
 sem_method sem_poisson_method(const sem_poisson *s) { return s ? s->method : SEM_CG; }
 

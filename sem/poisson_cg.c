@@ -51,6 +51,13 @@ typedef struct {
     /* edge rule (Gauss–Legendre on [-1,1]) */
     int nqe;
     double *te, *we;
+    /* the edge rule's points on each local edge k, then t = -1 and t = +1
+     * (Dirichlet vertex values): point q of edge k is row k nte + q of the
+     * geometry Lagrange values El, Elr, Els (ng each) and of the modes Epsi
+     * (nloc), the same for every element (tabulated once: the solves'
+     * boundary data needed a Lagrange and a modal evaluation per point) */
+    int nte;
+    double *Ers, *El, *Elr, *Els, *Epsi;
     double *Mf;       /* (P-1)^2 Cholesky factor of the edge-mode mass matrix */
     /* per element */
     char *bc_kind;    /* 3*ntris: -1 interior, else sem_bc_kind */
@@ -64,6 +71,7 @@ typedef struct {
     long nfree, ndir;
     int pure_neumann;
     sem_sparse *A;
+    sem_poisson_work work;
 } cg_state;
 
 static void cg_free(void *state)
@@ -81,6 +89,11 @@ static void cg_free(void *state)
     free(c->Gs);
     free(c->te);
     free(c->we);
+    free(c->Ers);
+    free(c->El);
+    free(c->Elr);
+    free(c->Els);
+    free(c->Epsi);
     free(c->Mf);
     free(c->bc_kind);
     free(c->S);
@@ -93,6 +106,7 @@ static void cg_free(void *state)
 }
 
 static long cg_ndofs(const void *state) { return ((const cg_state *)state)->space->ndofs; }
+static sem_poisson_work cg_work(const void *state) { return ((const cg_state *)state)->work; }
 
 /* Position, Jacobian (x_r, x_s, y_r, y_s) and det at volume point k. */
 static double cg_geom_at(const cg_state *c, const double *gxy, int k, double x[2], double J[4])
@@ -123,15 +137,17 @@ static void cg_edge_point(int k, double t, double rs[2], double drs[2])
     drs[1] = 0.5 * (b[1] - a[1]);
 }
 
-/* Position, outward unit normal and ds/dt at parameter t on edge k. */
-static void cg_edge_geom(const cg_state *c, const double *gxy, int k, double t, double rs[2],
+/* Reference point, position, outward unit normal and ds/dt at tabulated
+ * point q of edge k (see cg_state.nte). */
+static void cg_edge_geom(const cg_state *c, const double *gxy, int k, int q, double rs[2],
                          double x[2], double n[2], double *dsdt)
 {
-    double drs[2], J[4];
-    cg_edge_point(k, t, rs, drs);
+    double drs[2];
+    const size_t row = (size_t)k * c->nte + q;
+    cg_edge_point(k, 0.0, rs, drs); /* d(r,s)/dt, the same all along the edge */
+    rs[0] = c->Ers[2 * row], rs[1] = c->Ers[2 * row + 1];
     /* map through the geometry Lagrange basis */
-    double l[CG_NMAX], lr[CG_NMAX], ls[CG_NMAX];
-    sem_tri_lagrange_eval(c->geo, rs[0], rs[1], l, lr, ls);
+    const double *l = c->El + row * c->ng, *lr = c->Elr + row * c->ng, *ls = c->Els + row * c->ng;
     double X = 0, Y = 0, xr = 0, xs = 0, yr = 0, ys = 0;
     for (int m = 0; m < c->ng; ++m) {
         const double px = gxy[2 * m], py = gxy[2 * m + 1];
@@ -139,8 +155,7 @@ static void cg_edge_geom(const cg_state *c, const double *gxy, int k, double t, 
         xr += lr[m] * px, yr += lr[m] * py;
         xs += ls[m] * px, ys += ls[m] * py;
     }
-    J[0] = xr, J[1] = xs, J[2] = yr, J[3] = ys;
-    const double tx = J[0] * drs[0] + J[1] * drs[1], ty = J[2] * drs[0] + J[3] * drs[1];
+    const double tx = xr * drs[0] + xs * drs[1], ty = yr * drs[0] + ys * drs[1];
     const double len = hypot(tx, ty);
     x[0] = X, x[1] = Y;
     /* counter-clockwise element: the outward normal is the tangent turned
@@ -217,9 +232,19 @@ static sq_status cg_element(const cg_state *c, int t, const double *Sref, double
 
 static sq_status cg_solve(void *state, const sem_poisson_data *data, sem_field *u, sq_error *err);
 
-static const sem_poisson_ops cg_ops = {cg_solve, cg_free, cg_ndofs};
+static const sem_poisson_ops cg_ops = {cg_solve, cg_free, cg_ndofs, cg_work};
 
-static sq_status cg_tables(cg_state *c, sq_error *err)
+/* x copied into a new array of n doubles (n + 1: never a zero-size malloc) */
+static double *cg_dup(const double *x, size_t n)
+{
+    double *y = malloc(sizeof(double) * (n + 1));
+    if (y) memcpy(y, x, sizeof(double) * n);
+    return y;
+}
+
+/* The reference tables: computed, or copied from src (a solver of the same
+ * order on a mesh of the same geometry order). */
+static sq_status cg_tables(cg_state *c, const cg_state *src, sq_error *err)
 {
     const sem_tri_mesh *m = c->mesh;
     const int n = c->nloc, P = c->P;
@@ -229,17 +254,42 @@ static sq_status cg_tables(cg_state *c, sq_error *err)
     SQ_TRY(sem_tri_lagrange_create(m->order, &c->geo, err));
     c->ng = sem_tri_lagrange_num_nodes(c->geo);
     const int nq = c->quad->npts, ng = c->ng;
-    c->B = malloc(sizeof(double) * (size_t)nq * n);
-    c->BrBs = malloc(sizeof(double) * 2 * (size_t)nq * n);
-    c->G = malloc(sizeof(double) * (size_t)nq * ng);
-    c->Gr = malloc(sizeof(double) * (size_t)nq * ng);
-    c->Gs = malloc(sizeof(double) * (size_t)nq * ng);
     c->nqe = P + m->order + 2;
-    c->te = malloc(sizeof(double) * c->nqe);
-    c->we = malloc(sizeof(double) * c->nqe);
-    c->Mf = malloc(sizeof(double) * ((size_t)(P - 1) * (P - 1) + 1));
-    if (!c->B || !c->BrBs || !c->G || !c->Gr || !c->Gs || !c->te || !c->we || !c->Mf)
+    c->nte = c->nqe + 2;
+    const size_t ne3 = 3 * (size_t)c->nte, nmf = (size_t)(P - 1) * (P - 1);
+    if (src) {
+        c->B = cg_dup(src->B, (size_t)nq * n);
+        c->BrBs = cg_dup(src->BrBs, 2 * (size_t)nq * n);
+        c->G = cg_dup(src->G, (size_t)nq * ng);
+        c->Gr = cg_dup(src->Gr, (size_t)nq * ng);
+        c->Gs = cg_dup(src->Gs, (size_t)nq * ng);
+        c->te = cg_dup(src->te, (size_t)c->nqe);
+        c->we = cg_dup(src->we, (size_t)c->nqe);
+        c->Mf = cg_dup(src->Mf, nmf);
+        c->Ers = cg_dup(src->Ers, 2 * ne3);
+        c->El = cg_dup(src->El, ne3 * ng);
+        c->Elr = cg_dup(src->Elr, ne3 * ng);
+        c->Els = cg_dup(src->Els, ne3 * ng);
+        c->Epsi = cg_dup(src->Epsi, ne3 * n);
+    } else {
+        c->B = malloc(sizeof(double) * (size_t)nq * n);
+        c->BrBs = malloc(sizeof(double) * 2 * (size_t)nq * n);
+        c->G = malloc(sizeof(double) * (size_t)nq * ng);
+        c->Gr = malloc(sizeof(double) * (size_t)nq * ng);
+        c->Gs = malloc(sizeof(double) * (size_t)nq * ng);
+        c->te = malloc(sizeof(double) * c->nqe);
+        c->we = malloc(sizeof(double) * c->nqe);
+        c->Mf = malloc(sizeof(double) * (nmf + 1));
+        c->Ers = malloc(sizeof(double) * 2 * ne3);
+        c->El = malloc(sizeof(double) * ne3 * ng);
+        c->Elr = malloc(sizeof(double) * ne3 * ng);
+        c->Els = malloc(sizeof(double) * ne3 * ng);
+        c->Epsi = malloc(sizeof(double) * ne3 * n);
+    }
+    if (!c->B || !c->BrBs || !c->G || !c->Gr || !c->Gs || !c->te || !c->we || !c->Mf ||
+        !c->Ers || !c->El || !c->Elr || !c->Els || !c->Epsi)
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_cg: out of memory");
+    if (src) return SQ_OK;
     for (int k = 0; k < nq; ++k) {
         const double r = c->quad->rs[2 * k], s = c->quad->rs[2 * k + 1];
         sem_cg_basis_eval(c->basis, r, s, c->B + (size_t)k * n, c->BrBs + (size_t)k * n,
@@ -248,6 +298,15 @@ static sq_status cg_tables(cg_state *c, sq_error *err)
                               c->Gs + (size_t)k * ng);
     }
     SQ_TRY(sem_gauss_jacobi(c->nqe, 0.0, 0.0, c->te, c->we, err));
+    for (size_t row = 0; row < ne3; ++row) {
+        const int k = (int)(row / c->nte), q = (int)(row % c->nte);
+        const double t = q < c->nqe ? c->te[q] : q == c->nqe ? -1.0 : 1.0;
+        double drs[2], *rs = c->Ers + 2 * row;
+        cg_edge_point(k, t, rs, drs);
+        sem_tri_lagrange_eval(c->geo, rs[0], rs[1], c->El + row * ng, c->Elr + row * ng,
+                              c->Els + row * ng);
+        sem_cg_basis_eval(c->basis, rs[0], rs[1], c->Epsi + row * n, NULL, NULL);
+    }
     /* 1D mass matrix of the edge modes f_p(t) = (1-t^2)/4 P_{p-1}^{(1,1)}(t) */
     if (P >= 2) {
         const int ne = P - 1;
@@ -266,56 +325,43 @@ static sq_status cg_tables(cg_state *c, sq_error *err)
     return SQ_OK;
 }
 
-sq_status sem_poisson_cg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn kind,
-                                void *kind_ctx, const sem_poisson_ops **ops, void **state,
-                                sq_error *err)
+
+/* A new state on mesh: basis, global numbering, tables (src's if given). */
+static sq_status cg_start(const sem_tri_mesh *mesh, int P, const cg_state *src, cg_state **out,
+                          sq_error *err)
 {
-    if (!ops || !state) return SQ_FAIL(err, SQ_ERR_USAGE, "poisson_cg_create: NULL output");
-    *ops = NULL;
-    *state = NULL;
-    if (!mesh || mesh->ntris <= 0 || P < 1 || P > SEM_MAX_ORDER)
-        return SQ_FAIL(err, SQ_ERR_USAGE, "poisson_cg_create: bad mesh or order %d", P);
     cg_state *c = calloc(1, sizeof *c);
     if (!c) return SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_cg_create: out of memory");
-    sq_status st = SQ_OK;
-    double *Sref = NULL, *K = NULL, *work = NULL;
+    *out = c;
     c->mesh = mesh;
     c->P = P;
-    if ((st = sem_cg_basis_create(P, &c->basis, err)) != SQ_OK) goto fail;
+    SQ_TRY(sem_cg_basis_create(P, &c->basis, err));
     c->nloc = c->basis->nloc;
     c->nb = c->basis->nb;
     c->ni = c->basis->ni;
-    if ((st = sem_cg_space_create(mesh, P, &c->space, err)) != SQ_OK) goto fail;
-    if ((st = cg_tables(c, err)) != SQ_OK) goto fail;
-    const int n = c->nloc, nb = c->nb, ni = c->ni, nt = mesh->ntris, nq = c->quad->npts;
-    const sem_cg_space *sp = c->space;
+    SQ_TRY(sem_cg_space_create(mesh, P, &c->space, err));
+    return cg_tables(c, src, err);
+}
 
-    /* boundary condition kind per element edge */
+/* Boundary condition kind of every element edge; the free and Dirichlet
+ * dofs. */
+static sq_status cg_dofs(cg_state *c, sem_bc_kind_fn kind, void *kind_ctx, sq_error *err)
+{
+    const sem_tri_mesh *mesh = c->mesh;
+    const sem_cg_space *sp = c->space;
+    const int nt = mesh->ntris, nb = c->nb, P = c->P;
     c->bc_kind = malloc(3 * (size_t)nt);
     c->gfree = malloc(sizeof(long) * ((size_t)sp->nbdofs + 1));
-    c->S = malloc(sizeof(double) * ((size_t)nt * nb * nb + 1));
-    c->W = malloc(sizeof(double) * ((size_t)nt * ni * nb + 1));
-    c->Lii = malloc(sizeof(double) * ((size_t)nt * ni * ni + 1));
-    c->mloc = malloc(sizeof(double) * (size_t)nt * n);
-    Sref = calloc(3 * (size_t)n * n + n, sizeof(double));
-    K = malloc(sizeof(double) * (size_t)n * n);
-    work = malloc(sizeof(double) * (4 * (size_t)nq * n + nq));
-    if (!c->bc_kind || !c->gfree || !c->S || !c->W || !c->Lii || !c->mloc || !Sref || !K || !work) {
-        st = SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_cg_create: out of memory (%d elements, P = %d)",
-                     nt, P);
-        goto fail;
-    }
+    if (!c->bc_kind || !c->gfree) return SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_cg: out of memory");
     int any_dir = 0;
     for (size_t h = 0; h < 3 * (size_t)nt; ++h) {
         c->bc_kind[h] = -1;
         if (mesh->neigh[h] >= 0) continue;
         const int tag = mesh->btag[h];
         const sem_bc_kind kd = kind ? kind(tag, kind_ctx) : SEM_BC_DIRICHLET;
-        if (kd != SEM_BC_DIRICHLET && kd != SEM_BC_NEUMANN) {
-            st = SQ_FAIL(err, SQ_ERR_USAGE, "poisson_cg_create: unknown condition %d on tag %d",
-                         (int)kd, tag);
-            goto fail;
-        }
+        if (kd != SEM_BC_DIRICHLET && kd != SEM_BC_NEUMANN)
+            return SQ_FAIL(err, SQ_ERR_USAGE, "poisson_cg_create: unknown condition %d on tag %d",
+                           (int)kd, tag);
         c->bc_kind[h] = (char)kd;
         any_dir |= kd == SEM_BC_DIRICHLET;
     }
@@ -335,7 +381,26 @@ sq_status sem_poisson_cg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
     c->nfree = c->ndir = 0;
     for (long g = 0; g < sp->nbdofs; ++g)
         c->gfree[g] = c->gfree[g] ? -1 - c->ndir++ : c->nfree++;
+    return SQ_OK;
+}
 
+/* Element matrices, condensed (S, W, Lii), mass vectors and the area. */
+static sq_status cg_elements(cg_state *c, sq_error *err)
+{
+    const int n = c->nloc, nb = c->nb, ni = c->ni, nt = c->mesh->ntris, nq = c->quad->npts;
+    sq_status st = SQ_OK;
+    c->S = malloc(sizeof(double) * ((size_t)nt * nb * nb + 1));
+    c->W = malloc(sizeof(double) * ((size_t)nt * ni * nb + 1));
+    c->Lii = malloc(sizeof(double) * ((size_t)nt * ni * ni + 1));
+    c->mloc = malloc(sizeof(double) * (size_t)nt * n);
+    double *Sref = calloc(3 * (size_t)n * n + n, sizeof(double));
+    double *K = malloc(sizeof(double) * (size_t)n * n);
+    double *work = malloc(sizeof(double) * (4 * (size_t)nq * n + nq));
+    if (!c->S || !c->W || !c->Lii || !c->mloc || !Sref || !K || !work) {
+        st = SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_cg_create: out of memory (%d elements, P = %d)",
+                     nt, c->P);
+        goto done;
+    }
     /* reference matrices for straight elements: Srr, Srs, Sss, mass vector */
     {
         double *Srr = Sref, *Srs = Sref + (size_t)n * n, *Sss = Sref + 2 * (size_t)n * n,
@@ -355,35 +420,60 @@ sq_status sem_poisson_cg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
             }
         }
     }
-
-    if (c->nfree > 0) {
-        const long nnz = (long)nt * nb * (nb + 1) / 2 + c->nfree;
-        if ((st = sem_sparse_create(c->nfree, nnz, &c->A, err)) != SQ_OK) goto fail;
-    }
     c->area = 0.0;
-    for (int t = 0; t < nt; ++t) {
+    for (int t = 0; t < nt && st == SQ_OK; ++t) {
         double *mv = c->mloc + (size_t)t * n;
-        if ((st = cg_element(c, t, Sref, K, mv, work, err)) != SQ_OK) goto fail;
+        if ((st = cg_element(c, t, Sref, K, mv, work, err)) != SQ_OK) break;
+        c->work.element_matrices++;
         for (int i = 0; i < 3; ++i) c->area += mv[i];
         /* Static condensation (K&S §4.1.6): S = Kbb - Kbi Kii^-1 Kib. */
         double *S = c->S + (size_t)t * nb * nb;
         for (int i = 0; i < nb; ++i) memcpy(S + i * nb, K + i * n, sizeof(double) * nb);
-        if (ni > 0) {
-            double *L = c->Lii + (size_t)t * ni * ni, *W = c->W + (size_t)t * ni * nb;
-            for (int i = 0; i < ni; ++i) {
-                memcpy(L + i * ni, K + (size_t)(nb + i) * n + nb, sizeof(double) * ni);
-                memcpy(W + i * nb, K + (size_t)(nb + i) * n, sizeof(double) * nb);
-            }
-            if (LAPACKE_dpotrf(LAPACK_ROW_MAJOR, 'L', ni, L, ni) != 0) {
-                st = SQ_FAIL(err, SQ_ERR_INTERNAL,
-                             "poisson_cg_create: interior block of element %d not SPD", t);
-                goto fail;
-            }
-            LAPACKE_dpotrs(LAPACK_ROW_MAJOR, 'L', ni, nb, L, ni, W, nb);
-            cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, nb, nb, ni, -1.0, K + nb, n, W,
-                        nb, 1.0, S, nb);
+        if (ni == 0) continue;
+        double *L = c->Lii + (size_t)t * ni * ni, *W = c->W + (size_t)t * ni * nb;
+        for (int i = 0; i < ni; ++i) {
+            memcpy(L + i * ni, K + (size_t)(nb + i) * n + nb, sizeof(double) * ni);
+            memcpy(W + i * nb, K + (size_t)(nb + i) * n, sizeof(double) * nb);
         }
-        if (!c->A) continue;
+        if (LAPACKE_dpotrf(LAPACK_ROW_MAJOR, 'L', ni, L, ni) != 0) {
+            st = SQ_FAIL(err, SQ_ERR_INTERNAL,
+                         "poisson_cg_create: interior block of element %d not SPD", t);
+            break;
+        }
+        LAPACKE_dpotrs(LAPACK_ROW_MAJOR, 'L', ni, nb, L, ni, W, nb);
+        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, nb, nb, ni, -1.0, K + nb, n, W, nb,
+                    1.0, S, nb);
+    }
+done:
+    free(Sref);
+    free(K);
+    free(work);
+    return st;
+}
+
+/* src's element data: its elements are this mesh's (checked by the caller). */
+static sq_status cg_elements_copy(cg_state *c, const cg_state *src, sq_error *err)
+{
+    const size_t nt = (size_t)c->mesh->ntris, nb = (size_t)c->nb, ni = (size_t)c->ni;
+    c->S = cg_dup(src->S, nt * nb * nb);
+    c->W = cg_dup(src->W, nt * ni * nb);
+    c->Lii = cg_dup(src->Lii, nt * ni * ni);
+    c->mloc = cg_dup(src->mloc, nt * (size_t)c->nloc);
+    c->area = src->area;
+    if (!c->S || !c->W || !c->Lii || !c->mloc)
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_cg: out of memory");
+    return SQ_OK;
+}
+
+/* The condensed global matrix of the free dofs, assembled and factored. */
+static sq_status cg_assemble(cg_state *c, sq_error *err)
+{
+    const int nb = c->nb, nt = c->mesh->ntris;
+    const sem_cg_space *sp = c->space;
+    if (c->nfree == 0) return SQ_OK;
+    SQ_TRY(sem_sparse_create(c->nfree, (long)nt * nb * (nb + 1) / 2 + c->nfree, &c->A, err));
+    for (int t = 0; t < nt; ++t) {
+        const double *S = c->S + (size_t)t * nb * nb;
         const long *map = sp->bmap + (size_t)t * nb;
         const signed char *sg = sp->bsign + (size_t)t * nb;
         for (int i = 0; i < nb; ++i) {
@@ -392,24 +482,60 @@ sq_status sem_poisson_cg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
             for (int j = 0; j < nb; ++j) {
                 const long fj = c->gfree[map[j]];
                 if (fj < 0 || fj > fi) continue;
-                if ((st = sem_sparse_add(c->A, fi, fj, sg[i] * sg[j] * S[i * nb + j], err)) != SQ_OK)
-                    goto fail;
+                SQ_TRY(sem_sparse_add(c->A, fi, fj, sg[i] * sg[j] * S[i * nb + j], err));
             }
         }
     }
-    if (c->A && (st = sem_sparse_factor(c->A, err)) != SQ_OK) goto fail;
-    free(Sref);
-    free(K);
-    free(work);
+    SQ_TRY(sem_sparse_factor(c->A, err));
+    c->work.factorizations++;
+    return SQ_OK;
+}
+
+sq_status sem_poisson_cg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn kind,
+                                void *kind_ctx, const sem_poisson_ops **ops, void **state,
+                                sq_error *err)
+{
+    if (!ops || !state) return SQ_FAIL(err, SQ_ERR_USAGE, "poisson_cg_create: NULL output");
+    *ops = NULL;
+    *state = NULL;
+    if (!mesh || mesh->ntris <= 0 || P < 1 || P > SEM_MAX_ORDER)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "poisson_cg_create: bad mesh or order %d", P);
+    cg_state *c = NULL;
+    sq_status st = cg_start(mesh, P, NULL, &c, err);
+    if (st == SQ_OK) st = cg_dofs(c, kind, kind_ctx, err);
+    if (st == SQ_OK) st = cg_elements(c, err);
+    if (st == SQ_OK) st = cg_assemble(c, err);
+    if (st != SQ_OK) {
+        cg_free(c);
+        return st;
+    }
     *ops = &cg_ops;
     *state = c;
     return SQ_OK;
-fail:
-    free(Sref);
-    free(K);
-    free(work);
-    cg_free(c);
-    return st;
+}
+
+sq_status sem_poisson_cg_create_like(const void *src_state, const sem_tri_mesh *mesh,
+                                     sem_bc_kind_fn kind, void *kind_ctx,
+                                     const sem_poisson_ops **ops, void **state, sq_error *err)
+{
+    const cg_state *src = src_state;
+    *ops = NULL;
+    *state = NULL;
+    if (!sem_tri_mesh_same_elements(mesh, src->mesh))
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "poisson_create_like: the mesh does not have the solver's elements");
+    cg_state *c = NULL;
+    sq_status st = cg_start(mesh, src->P, src, &c, err);
+    if (st == SQ_OK) st = cg_dofs(c, kind, kind_ctx, err);
+    if (st == SQ_OK) st = cg_elements_copy(c, src, err);
+    if (st == SQ_OK) st = cg_assemble(c, err);
+    if (st != SQ_OK) {
+        cg_free(c);
+        return st;
+    }
+    *ops = &cg_ops;
+    *state = c;
+    return SQ_OK;
 }
 
 /* Values of the Dirichlet dofs for data g (vertex values by interpolation,
@@ -437,7 +563,7 @@ static sq_status cg_dirichlet(const cg_state *c, const sem_poisson_data *data, d
                     for (int e = 0; e < 2; ++e) {
                         const long d = -1 - c->gfree[map[(k + e) % 3]];
                         if (done[d]) continue;
-                        cg_edge_geom(c, gxy, k, e ? 1.0 : -1.0, rs, x, nrm, &dsdt);
+                        cg_edge_geom(c, gxy, k, c->nqe + e, rs, x, nrm, &dsdt);
                         ud[d] = data->g(x, nrm, tag, data->g_ctx);
                         done[d] = 1;
                     }
@@ -449,7 +575,7 @@ static sq_status cg_dirichlet(const cg_state *c, const sem_poisson_data *data, d
                 double rhs[SEM_MAX_ORDER] = {0};
                 for (int q = 0; q < c->nqe; ++q) {
                     const double tq = c->te[q];
-                    cg_edge_geom(c, gxy, k, tq, rs, x, nrm, &dsdt);
+                    cg_edge_geom(c, gxy, k, q, rs, x, nrm, &dsdt);
                     const double r = data->g(x, nrm, tag, data->g_ctx) - 0.5 * (1 - tq) * ga -
                                      0.5 * (1 + tq) * gb;
                     for (int p = 1; p <= ne; ++p)
@@ -505,11 +631,11 @@ static sq_status cg_solve(void *state, const sem_poisson_data *data, sem_field *
             if (c->bc_kind[3 * t + k] != SEM_BC_NEUMANN) continue;
             const int tag = m->btag[3 * t + k];
             for (int q = 0; q < c->nqe; ++q) {
-                double rs[2], x[2], nrm[2], dsdt, psi[CG_NMAX];
-                cg_edge_geom(c, gxy, k, c->te[q], rs, x, nrm, &dsdt);
+                double rs[2], x[2], nrm[2], dsdt;
+                cg_edge_geom(c, gxy, k, q, rs, x, nrm, &dsdt);
                 const double w = c->we[q] * dsdt * data->g(x, nrm, tag, data->g_ctx);
                 scale += fabs(w);
-                sem_cg_basis_eval(c->basis, rs[0], rs[1], psi, NULL, NULL);
+                const double *psi = c->Epsi + ((size_t)k * c->nte + q) * n;
                 for (int i = 0; i < n; ++i) b[i] += w * psi[i];
             }
         }

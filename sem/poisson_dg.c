@@ -73,6 +73,7 @@ typedef struct {
     double *bdn;  /* ne*nm*nb: d phi/dn */
     double *bsig; /* nb: penalty */
     double *rhs;  /* ndofs work */
+    sem_poisson_work work;
 } dg_state;
 
 static void dg_free(void *state)
@@ -94,6 +95,7 @@ static void dg_free(void *state)
 }
 
 static long dg_ndofs(const void *state) { return ((const dg_state *)state)->ndofs; }
+static sem_poisson_work dg_work(const void *state) { return ((const dg_state *)state)->work; }
 
 /* Edge k of the reference triangle at parameter t in [0,1]: vertices
  * (0,0), (1,0), (0,1); direction (dr, ds) = v_{k+1} - v_k. */
@@ -243,7 +245,7 @@ static void weigh(int ne, int nm, const double *W, const double *in, double *out
 
 static sq_status dg_solve(void *state, const sem_poisson_data *data, sem_field *u, sq_error *err);
 
-static const sem_poisson_ops dg_ops = {dg_solve, dg_free, dg_ndofs};
+static const sem_poisson_ops dg_ops = {dg_solve, dg_free, dg_ndofs, dg_work};
 
 static sq_status find_back_edge(const sem_tri_mesh *M, int e, int k, int b, int *kb, sq_error *err)
 {
@@ -445,6 +447,7 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
          * tall-skinny shapes */
         cblas_dgemm(CblasRowMajor, CblasTrans, CblasNoTrans, nm, nm, 2 * nq, 1.0, B, nm, B, nm, 0.0,
                     K, nm);
+        S->work.element_matrices++;
         if ((st = scatter(S, K, e, e, err)) != SQ_OK) goto fail;
     }
 
@@ -556,6 +559,7 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
             }
     }
     st = sem_sparse_factor(S->A, err);
+    if (st == SQ_OK) S->work.factorizations++;
 
 fail: /* success falls through: the work arrays go either way */
     free(lq);

@@ -10,6 +10,7 @@ typedef struct {
     sq_status (*solve)(void *state, const sem_poisson_data *data, sem_field *u, sq_error *err);
     void (*free)(void *state);
     long (*ndofs)(const void *state);
+    sem_poisson_work (*work)(const void *state);
 } sem_poisson_ops;
 
 /* Each returns its ops table and a new state (NULL on failure). */
@@ -19,5 +20,10 @@ sq_status sem_poisson_cg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
 sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn kind,
                                 void *kind_ctx, const sem_poisson_ops **ops, void **state,
                                 sq_error *err);
+/* CG on a mesh with src_state's elements, sharing their matrices
+ * (sem_poisson_create_like). */
+sq_status sem_poisson_cg_create_like(const void *src_state, const sem_tri_mesh *mesh,
+                                     sem_bc_kind_fn kind, void *kind_ctx,
+                                     const sem_poisson_ops **ops, void **state, sq_error *err);
 
 #endif

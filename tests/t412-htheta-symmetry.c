@@ -13,7 +13,7 @@
  * measured): 1e-8.  The jump is a sum of θ differences around the point,
  * each with the same solve's round-off times |θ| <= 2 pi: 1e-8. */
 #include "htheta_field.h"
-#include "test_util.h"
+#include "test_face.h"
 
 #include <gsl/gsl_errno.h>
 
@@ -40,15 +40,6 @@ static void symmetry(const sq_htheta *ht, const double c[2], double angle, doubl
         }
 }
 
-static void open_face(const char *file, cad_model **m, cad_face **f)
-{
-    char path[4096];
-    sq_error err;
-    sq_test_path(path, sizeof path, 0, file);
-    SQ_TEST_OK(cad_model_read(path, m, &err), err);
-    SQ_TEST_OK(cad_face_create(*m, 0, f, &err), err);
-}
-
 int main(void)
 {
     gsl_set_error_handler_off();
@@ -59,7 +50,7 @@ int main(void)
     double eh, et;
 
     /* triangle, natural pattern */
-    open_face("triangle.step", &m, &f);
+    sq_test_open_face("triangle.step", &m, &f);
     sq_field_options fo;
     sq_field_options_default(&fo);
     sq_field_analysis an;
@@ -93,7 +84,7 @@ int main(void)
     cad_model_free(&m);
 
     /* disc, four valence-3 points */
-    open_face("disc.step", &m, &f);
+    sq_test_open_face("disc.step", &m, &f);
     SQ_TEST_OK(sq_pattern_parse("0.5 0 3\n0 0.5 3\n-0.5 0 3\n0 -0.5 3\n", "disc", &p, &err), err);
     SQ_TEST_OK(sq_htheta_compute(f, &p, &o, &ht, &err), err);
     const double o0[2] = {0.0, 0.0};

@@ -1,7 +1,9 @@
 #include "h_field.h"
 
+#include "dg_modal.h"
 #include "gauss.h"
 #include "poisson.h"
+#include "tri_nodes.h"
 #include "tri_quad.h"
 
 #include <math.h>
@@ -15,6 +17,7 @@ void sq_h_field_free(sq_h_field *h)
     free(h->xy);
     free(h->c);
     sem_field_evaluator_free(&h->ev);
+    sem_poisson_free(&h->solver);
     sem_field_free(&h->hr);
     memset(h, 0, sizeof *h);
 }
@@ -107,6 +110,46 @@ static sq_status boundary_integral(const sem_locator *loc, const sem_tri_mesh *m
     return SQ_OK;
 }
 
+/* The mean of H_s over the mesh, by a rule of degree 2P + 4 on every
+ * element's map: sem_locator_map's, with the geometry's modes tabulated
+ * once per point of the rule instead of at every element (the same sums
+ * in the same order). */
+static sq_status singular_mean(const sq_h_field *h, const sem_locator *loc, double *mean,
+                               sq_error *err)
+{
+    const sem_tri_mesh *mesh = h->mesh;
+    const int ng = sem_tri_num_nodes(mesh->order);
+    sem_tri_quad *quad = NULL;
+    SQ_TRY(sem_tri_quad_create(2 * h->order + 4, &quad, err));
+    const int nq = quad->npts;
+    double *phi = malloc(sizeof(double) * 3 * (size_t)nq * ng);
+    if (!phi) {
+        sem_tri_quad_free(&quad);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    double *dr = phi + (size_t)nq * ng, *ds = dr + (size_t)nq * ng;
+    sem_dubiner_tab tab;
+    sem_dubiner_tab_init(&tab, mesh->order);
+    for (int q = 0; q < nq; q++)
+        sem_dubiner_tab_eval(&tab, quad->rs[2 * q], quad->rs[2 * q + 1], phi + (size_t)q * ng,
+                             dr + (size_t)q * ng, ds + (size_t)q * ng);
+    const double *gm = sem_locator_modal_geometry(loc);
+    double ihs = 0.0, area = 0.0;
+    for (int e = 0; e < mesh->ntris; e++)
+        for (int q = 0; q < nq; q++) {
+            double x[2];
+            const size_t o = (size_t)q * ng;
+            const double det =
+                sem_modal_map(ng, gm + 2 * (size_t)ng * e, phi + o, dr + o, ds + o, x, NULL);
+            ihs += quad->w[q] * det * sq_h_singular(h, x, NULL);
+            area += quad->w[q] * det;
+        }
+    *mean = ihs / area;
+    free(phi);
+    sem_tri_quad_free(&quad);
+    return SQ_OK;
+}
+
 sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
                            const sem_tri_mesh *mesh, const sem_locator *loc, int order,
                            int npoints, const double *xy, const int *valence, const int *quads,
@@ -119,8 +162,6 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
     out->xy = malloc(sizeof(double) * (2 * (size_t)npoints + 1));
     out->c = malloc(sizeof(double) * ((size_t)npoints + 1));
     sem_point_source *ps = malloc(sizeof *ps * ((size_t)info->nvertices + 1));
-    sem_poisson *solver = NULL;
-    sem_tri_quad *quad = NULL;
     sq_status st = SQ_OK;
     if (!out->xy || !out->c || !ps) {
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
@@ -164,12 +205,13 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
     out->imbalance = ig + ssum;
     out->data_size = iabs + sabs;
     b.gshift = out->imbalance / len; /* the quadrature residue, spread evenly */
-    if ((st = sem_poisson_create(mesh, order, SEM_CG, all_neumann, NULL, &solver, err)) != SQ_OK)
+    if ((st = sem_poisson_create(mesh, order, SEM_CG, all_neumann, NULL, &out->solver, err)) !=
+        SQ_OK)
         goto done;
-    out->ndofs = sem_poisson_ndofs(solver);
+    out->ndofs = sem_poisson_ndofs(out->solver);
     if ((st = sem_field_create(mesh, order, 1, &out->hr, err)) != SQ_OK) goto done;
     sem_poisson_data data = {NULL, NULL, hr_flux, &b, nps, ps};
-    if ((st = sem_poisson_solve(solver, &data, out->hr, err)) != SQ_OK) {
+    if ((st = sem_poisson_solve(out->solver, &data, out->hr, err)) != SQ_OK) {
         /* the solver's own quadrature of the data found them unbalanced:
          * a property of this pattern on this face, not a usage error */
         if (st == SQ_ERR_USAGE && err) {
@@ -185,20 +227,11 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
     if ((st = b.st) != SQ_OK) goto done;
     if ((st = sem_field_evaluator_create(out->hr, loc, &out->ev, err)) != SQ_OK) goto done;
     /* zero mean of H = H_s + H_r (H_r has zero mean already) */
-    if ((st = sem_tri_quad_create(2 * order + 4, &quad, err)) != SQ_OK) goto done;
-    double ihs = 0.0, area = 0.0;
-    for (int e = 0; e < mesh->ntris; e++)
-        for (int q = 0; q < quad->npts; q++) {
-            double x[2];
-            const double det = sem_locator_map(loc, e, quad->rs[2 * q], quad->rs[2 * q + 1], x, NULL);
-            ihs += quad->w[q] * det * sq_h_singular(out, x, NULL);
-            area += quad->w[q] * det;
-        }
-    out->shift = -ihs / area;
+    double mean;
+    if ((st = singular_mean(out, loc, &mean, err)) != SQ_OK) goto done;
+    out->shift = -mean;
 done:
     free(ps);
-    sem_poisson_free(&solver);
-    sem_tri_quad_free(&quad);
     if (st != SQ_OK) sq_h_field_free(out);
     return st;
 }

@@ -239,6 +239,12 @@ sq_status sq_htheta_compute(const cad_face *face, const sq_pattern *pattern,
     if ((st = sq_theta_field_solve(face, m, out->loc, &out->h, out->vloops, out->nloops, sing,
                                    &out->theta, err)) != SQ_OK)
         goto done;
+    {
+        const sem_poisson_work wh = sem_poisson_work_done(out->h.solver), wt = out->theta.work;
+        out->work = (sem_poisson_work){wh.element_matrices + wt.element_matrices,
+                                       wh.factorizations + wt.factorizations};
+    }
+    sem_poisson_free(&out->h.solver); /* θ's solver had what it needed */
     for (int j = 0; j < np; j++)
         out->points[j].jump = sq_theta_jump_around_vertex(&out->theta, sing[j]);
     st = loop_checks(face, out, err);
@@ -278,14 +284,16 @@ int sq_htheta_eval(const sq_htheta *f, const double x[2], int *elem, double *H, 
     double r, s;
     if (sem_locator_find(f->loc, x, elem ? *elem : -1, &e, &r, &s)) return 1;
     if (elem) *elem = e;
-    /* H (with its singular log terms) only when asked for: the tracer
-     * needs θ alone */
+    /* each of H and θ (with their singular log and arg terms) only when
+     * asked for: the tracer needs θ alone, the sizes e^H alone */
     if (H || gH) {
         const double h = sq_h_field_eval_ref(&f->h, e, r, s, NULL, gH);
         if (H) *H = h;
     }
-    const double t = sq_theta_field_eval_ref(&f->theta, e, r, s, gtheta);
-    if (theta) *theta = t;
+    if (theta || gtheta) {
+        const double t = sq_theta_field_eval_ref(&f->theta, e, r, s, gtheta);
+        if (theta) *theta = t;
+    }
     return 0;
 }
 

@@ -66,6 +66,9 @@ typedef struct {
     sq_htheta_loop *loops;
     double align_tol; /* rad */
     double t_triangulate, t_solve;
+    /* H's and θ's solvers together: θ's copies H's element matrices, so
+     * one matrix per triangle and two factorizations */
+    sem_poisson_work work;
 } sq_htheta;
 
 /* SQ_ERR_PATTERN for a pattern refused by sq_pattern_check (nothing is

@@ -138,10 +138,11 @@ sq_status sq_theta_field_solve(const cad_face *face, const sem_tri_mesh *mesh,
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "theta: the cut mesh is not connected");
         goto done;
     }
-    /* step 2 */
-    if ((st = sem_poisson_create(cm, h->order, SEM_CG, all_neumann, NULL, &solver, err)) != SQ_OK)
+    /* step 2, with H_r's element matrices: the cut mesh has its elements */
+    if ((st = sem_poisson_create_like(h->solver, cm, all_neumann, NULL, &solver, err)) != SQ_OK)
         goto done;
     out->ndofs = sem_poisson_ndofs(solver);
+    out->work = sem_poisson_work_done(solver);
     if ((st = sem_field_create(cm, h->order, 1, &out->tr, err)) != SQ_OK) goto done;
     tdata d = {out, loc, 0};
     sem_poisson_data data = {NULL, NULL, tr_flux, &d, 0, NULL};
@@ -150,7 +151,7 @@ sq_status sq_theta_field_solve(const cad_face *face, const sem_tri_mesh *mesh,
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "theta: a boundary point left its element");
         goto done;
     }
-    if ((st = sem_field_evaluator_create(out->tr, NULL, &out->ev, err)) != SQ_OK) goto done;
+    if ((st = sem_field_evaluator_create(out->tr, loc, &out->ev, err)) != SQ_OK) goto done;
     /* step 3: anchor on the first edge of the outer loop */
     const int edge0 = cad_face_loop_first_edge(face, 0);
     int hb = -1;

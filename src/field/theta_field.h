@@ -35,6 +35,7 @@ typedef struct {
     double theta0;            /* the constant of step 3 */
     double anchor[2];         /* the boundary point of step 3 */
     long ndofs;
+    sem_poisson_work work;    /* of θ_r's solver */
 } sq_theta_field;
 
 /* loops: sq_mesh_vertex_loops of mesh; sing[h->npoints]: mesh vertex of
