@@ -20,8 +20,9 @@ class Step:
         self.ents.append(s)
         return "#%d" % len(self.ents)
 
-    def pt(self, x, y):
-        return self.add("CARTESIAN_POINT('',(%s,%s,0.))" % (self.real(x), self.real(y)))
+    def pt(self, x, y, z=0.0):
+        """z: a B-spline's pole off the plane (an edge within the tolerance of it)."""
+        return self.add("CARTESIAN_POINT('',(%s,%s,%s))" % (self.real(x), self.real(y), self.real(z)))
 
     def dirn(self, x, y, z=0.0):
         return self.add("DIRECTION('',(%s,%s,%s))" % (self.real(x), self.real(y), self.real(z)))
