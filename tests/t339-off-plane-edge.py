@@ -28,7 +28,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from step_face import Step  # noqa: E402
+from step_face import Step, info_face  # noqa: E402
 
 sq = sys.argv[1]
 D = 1e-3
@@ -50,12 +50,11 @@ def run(*args):
     return subprocess.run([sq, *args], capture_output=True, text=True, timeout=120)
 
 
-r = run("info", step, "--json", "-q")
-faces = json.loads(r.stdout)["faces"] if r.returncode == 0 else []
-if len(faces) != 1:
-    fails.append(f"info: exit {r.returncode}, {len(faces)} faces: {r.stderr.strip()}")
-elif abs(faces[0]["area"] - 1.5) > 1e-12:
-    fails.append(f"info: area {faces[0]['area']!r}, not 1.5 (the projected rectangle)")
+f, why = info_face(sq, step)
+if f is None:
+    fails.append(why)
+elif abs(f["area"] - 1.5) > 1e-12:
+    fails.append(f"info: area {f['area']!r}, not 1.5 (the projected rectangle)")
 
 rep = os.path.join(tmp, "layout.json")
 r = run("layout", step, "-q", "--report", rep)

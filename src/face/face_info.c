@@ -198,6 +198,14 @@ void sq_heal_text(const cad_heal *h, const char *unit_name, char *buf, size_t n)
         snprintf(buf, n, "blunted a cusp between edges %d and %d of wire %d at (%.6g, %.6g, %.6g): cut %.3g%s and %.3g%s off them, joined by a %.3g%s segment",
                  h->edge_a, h->edge_b, h->wire, p[0], p[1], p[2], h->cut[0], unit, h->cut[1], unit,
                  h->size, unit);
+    else if (!strcmp(h->kind, "as read") && !strcmp(h->defect, "no face"))
+        snprintf(buf, n, "kept the face as read: healing gave no face");
+    else if (!strcmp(h->kind, "as read") && h->edge_b >= 0)
+        snprintf(buf, n, "kept the face as read: healing would leave a %s of %.3g%s between edges %d and %d of wire %d at (%.6g, %.6g, %.6g)",
+                 h->defect, h->size, unit, h->edge_a, h->edge_b, h->wire, p[0], p[1], p[2]);
+    else if (!strcmp(h->kind, "as read"))
+        snprintf(buf, n, "kept the face as read: healing would leave a %s %d of wire %d (length %.3g%s) at (%.6g, %.6g, %.6g)",
+                 h->defect, h->edge_a, h->wire, h->size, unit, p[0], p[1], p[2]);
     else
         snprintf(buf, n, "fixed a %s in wire %d", h->kind, h->wire);
 }
@@ -213,6 +221,7 @@ void sq_json_healing(sq_json *j, const cad_model *m, int face)
     for (int k = 0; cad_model_face_heal(m, face, k, &h) == 0; k++) {
         sq_json_begin_object(j);
         sq_json_key_string(j, "kind", h.kind);
+        if (!strcmp(h.kind, "as read")) sq_json_key_string(j, "defect", h.defect);
         sq_json_key_int(j, "wire", h.wire);
         sq_json_key(j, "edges");
         sq_json_begin_array(j);
