@@ -96,10 +96,13 @@ double cad_model_heal_tolerance(const cad_model *model);
  * edge" (edge_a, size its length), "degenerated edge" (edge_a),
  * "self-intersection" (the wire's), or "cusp" (between edges edge_a and
  * edge_b, blunted: cut[0] and cut[1] cut off them, joined by a segment of
- * length size); at: where, in the file's 3D coordinates.  Wires and edges
- * are numbered as in the file. */
+ * length size), or "as read" (the face kept as read: the fix would leave a
+ * defect of kind `defect`, "no face" or one of the above, with its wire,
+ * edges, size and place); at: where, in the file's 3D coordinates.  Wires
+ * and edges are numbered as in the file. */
 typedef struct {
     const char *kind;
+    const char *defect; /* "as read": the defect the fix would leave; else "" */
     int wire, edge_a, edge_b; /* -1: none */
     double size;
     double at[3];

@@ -19,8 +19,10 @@
 //     (shared edges and vertices of the other faces keep their tolerances),
 //     precision = the face's own, maximal tolerance = the healing tolerance;
 //     the fixed face is analysed again (step 1 at its new edge tolerances)
-//     and replaces the face in the model, or the face is broken if a defect
-//     is left;
+//     and replaces the face in the model; if a defect is left (an edge that
+//     became small as the fix grew the tolerances), the face as read is kept
+//     (its defects are all within the tolerance) with one record "as read"
+//     naming that defect;
 //  5. every planar face, healed or not, is then checked to be a face at all
 //     (loops that cross, a hole not inside the outer loop, holes that
 //     overlap make it broken, with the loops and a point named): its
@@ -410,18 +412,16 @@ void heal_face(cad_model *m, int i, double file_tol, bool given)
         const double after = std::min(std::max(tol, prec), face_precision(healed));
         std::vector<sqcad::heal_record> left = analyse_face(healed, after);
         if (!left.empty() || healed.IsNull()) {
-            // a defect within the tolerance that the fix left (an edge that became
-            // small when closing gaps grew the tolerances): no tolerance allows it
-            char buf[700];
-            if (left.empty())
-                std::snprintf(buf, sizeof buf, "healing gave no face (healing tolerance %.3g%s; --no-heal takes the face as read)",
-                              tol, unit);
-            else
-                std::snprintf(buf, sizeof buf, "healing left a %s, at the precision %.3g%s of the healed edges, within the healing tolerance %.3g%s (--no-heal takes the face as read)",
-                              describe(left[0], unit).c_str(), after, unit, tol, unit);
-            m->status[(size_t)i] = CAD_FACE_BROKEN;
-            m->reason[(size_t)i] = buf;
-            return;
+            // A defect within the tolerance that the fix left (an edge that
+            // became small when closing gaps grew the tolerances): the face as
+            // read, every defect of which is within the tolerance, is kept and
+            // what the fix would leave is said (design 4; docs/healing.md).
+            const double none[3] = {0, 0, 0};
+            sqcad::heal_record r = left.empty() ? record("as read", 0, -1, -1, 0, none) : left[0];
+            r.defect = left.empty() ? "no face" : left[0].kind;
+            r.kind = "as read";
+            healed = face;
+            d.assign(1, r);
         }
     }
     // Cusps blunted within the tolerance (design 6); kept only if the

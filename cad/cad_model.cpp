@@ -582,6 +582,7 @@ int cad_model_face_heal(const cad_model *model, int index, int k, cad_heal *out)
     if (!out || k < 0 || k >= cad_model_face_num_heals(model, index)) return -1;
     const sqcad::heal_record &r = model->heals[(size_t)index][(size_t)k];
     out->kind = r.kind.c_str();
+    out->defect = r.defect.c_str();
     out->wire = r.wire;
     out->edge_a = r.edge_a;
     out->edge_b = r.edge_b;

@@ -26,6 +26,7 @@ struct heal_record {
     double size = 0;    // gap width or edge length, file unit (0: no size)
     double cut[2] = {0, 0}; // "cusp": length cut off edges edge_a and edge_b
     double at[3] = {0, 0, 0};
+    std::string defect; // "as read": the kind of defect the fix would leave
 };
 } // namespace sqcad
 

@@ -1,6 +1,9 @@
 """Test helper: a STEP file of one planar face in z = 0 (mm, inch or metre),
 written as text (AP214: lines, circles and cubic B-splines; no p-curves, the
-reader makes them), so that tests build their own faces without Gmsh."""
+reader makes them), so that tests build their own faces without Gmsh; and
+that face as `semquad info --json` reads it."""
+import json
+import subprocess
 
 
 class Step:
@@ -20,8 +23,9 @@ class Step:
         self.ents.append(s)
         return "#%d" % len(self.ents)
 
-    def pt(self, x, y):
-        return self.add("CARTESIAN_POINT('',(%s,%s,0.))" % (self.real(x), self.real(y)))
+    def pt(self, x, y, z=0.0):
+        """z: a B-spline's pole off the plane (an edge within the tolerance of it)."""
+        return self.add("CARTESIAN_POINT('',(%s,%s,%s))" % (self.real(x), self.real(y), self.real(z)))
 
     def dirn(self, x, y, z=0.0):
         return self.add("DIRECTION('',(%s,%s,%s))" % (self.real(x), self.real(y), self.real(z)))
@@ -144,3 +148,14 @@ def step_face(path, loops, unit="mm"):
     """loops: polygons [(x, y), ...] (the first counter-clockwise) or ('circle', cx, cy, r)."""
     s = Step(unit)
     s.write(path, [s.circle(*l[1:]) if l[0] == "circle" else s.polygon(l) for l in loops])
+
+
+def info_face(sq, path, *args):
+    """(the file's one face as `semquad info --json` gives it, or None; what went
+    wrong otherwise)."""
+    r = subprocess.run([sq, "info", path, "--json", "-q", *args], capture_output=True, text=True,
+                       timeout=120)
+    faces = json.loads(r.stdout)["faces"] if r.returncode == 0 else []
+    if len(faces) != 1:
+        return None, f"info: exit {r.returncode}, {len(faces)} faces: {r.stderr.strip()}"
+    return faces[0], ""

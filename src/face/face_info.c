@@ -15,16 +15,6 @@ typedef struct {
     sq_error *err;
 } edge_ctx;
 
-/* x dy/ds - y dx/ds: twice the area swept per unit arc length (Green). */
-static double green_integrand(double s, void *p)
-{
-    edge_ctx *c = p;
-    double xy[2], t[2];
-    if (c->status != SQ_OK) return 0.0;
-    c->status = cad_face_edge_eval(c->face, c->edge, s, xy, t, NULL, c->err);
-    return c->status == SQ_OK ? xy[0] * t[1] - xy[1] * t[0] : 0.0;
-}
-
 static double abs_curvature(double s, void *p)
 {
     edge_ctx *c = p;
@@ -108,16 +98,14 @@ sq_status sq_face_info_compute(const cad_face *face, sq_face_info *info, sq_erro
     sq_status st = SQ_OK;
     double twice_area = 0.0, perimeter = 0.0;
     for (int e = 0; e < ne && st == SQ_OK; e++) {
-        double a = 0.0;
-        /* absolute floor of |x dy - y dx| integrated: 1e-14 of the edge's
-         * own scale (length times distance from the origin) below unit
-         * size, so that a face scaled to 1e-9 is integrated as finely */
-        double p0[2], L = cad_face_edge_length(face, e);
-        st = cad_face_edge_eval(face, e, 0.0, p0, NULL, NULL, err);
-        if (st != SQ_OK) break;
+        /* Green's integral in the curve's own parameter (cad_face_edge_green),
+         * the one the layout's patch areas use: a unit 2D tangent against 3D
+         * arc length would inflate the area by tilt^2/2 where an edge leaves
+         * the face's plane within the file's tolerance (7.6e-8 of the area on
+         * sheet_metal_54's face 7, whose one patch then "mismatched"). */
+        double a = 0.0, L = cad_face_edge_length(face, e);
         perimeter += L;
-        double scale = L * (L + hypot(p0[0], p0[1]));
-        st = integrate_edge(face, e, green_integrand, 1e-14 * fmin(1.0, scale), &a, err);
+        st = cad_face_edge_green(face, e, 0.0, L, &a, err);
         twice_area += a;
         /* Bounding box from a dense sample (exact enough for framing). */
         for (int k = 0; k <= 64 && st == SQ_OK; k++) {
@@ -210,6 +198,14 @@ void sq_heal_text(const cad_heal *h, const char *unit_name, char *buf, size_t n)
         snprintf(buf, n, "blunted a cusp between edges %d and %d of wire %d at (%.6g, %.6g, %.6g): cut %.3g%s and %.3g%s off them, joined by a %.3g%s segment",
                  h->edge_a, h->edge_b, h->wire, p[0], p[1], p[2], h->cut[0], unit, h->cut[1], unit,
                  h->size, unit);
+    else if (!strcmp(h->kind, "as read") && !strcmp(h->defect, "no face"))
+        snprintf(buf, n, "kept the face as read: healing gave no face");
+    else if (!strcmp(h->kind, "as read") && h->edge_b >= 0)
+        snprintf(buf, n, "kept the face as read: healing would leave a %s of %.3g%s between edges %d and %d of wire %d at (%.6g, %.6g, %.6g)",
+                 h->defect, h->size, unit, h->edge_a, h->edge_b, h->wire, p[0], p[1], p[2]);
+    else if (!strcmp(h->kind, "as read"))
+        snprintf(buf, n, "kept the face as read: healing would leave a %s %d of wire %d (length %.3g%s) at (%.6g, %.6g, %.6g)",
+                 h->defect, h->edge_a, h->wire, h->size, unit, p[0], p[1], p[2]);
     else
         snprintf(buf, n, "fixed a %s in wire %d", h->kind, h->wire);
 }
@@ -225,6 +221,7 @@ void sq_json_healing(sq_json *j, const cad_model *m, int face)
     for (int k = 0; cad_model_face_heal(m, face, k, &h) == 0; k++) {
         sq_json_begin_object(j);
         sq_json_key_string(j, "kind", h.kind);
+        if (!strcmp(h.kind, "as read")) sq_json_key_string(j, "defect", h.defect);
         sq_json_key_int(j, "wire", h.wire);
         sq_json_key(j, "edges");
         sq_json_begin_array(j);
