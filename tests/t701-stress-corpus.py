@@ -51,7 +51,6 @@ IDS = [1, 17, 2, 18, 3, 19, 6, 38, 7, 23, 8, 56, 9, 25, 11, 27, 13, 45, 14, 46,
        15, 31, 47, 16, 48, 36, 100, 37, 42, 74, 280, 39, 183, 247]
 # faces whose layout road fails, by the stage that fails (issue 14)
 LAYOUT_GIVES_WAY = {
-    1: "relaxation: quads with a non-positive Jacobian",
     46: "relaxation: quads with a non-positive Jacobian (scaled face)",
     2: "layout repair: repair line longer than the bound",
     19: "layout repair: repair line longer than the bound",
