@@ -13,7 +13,9 @@ worst_quad) and the road that made it; with --min-quality 0 it exits 0.  With
 exit 0, the report's road "split", its road_reason naming the floor, the
 worst scaled Jacobian at or above the floor, and a note on stderr saying
 which road was kept and why; with --min-quality 0 the layout road's mesh
-is kept (no floor to miss).  A floor outside
+is kept (no floor to miss); where the split road's worst quad is no better
+(the half disc under a floor of 0.99) the layout road's is kept and the run
+exits 8.  A floor outside
 [0, 1] is a usage error.  Every example (the planar ones) meshed with the
 defaults exits 0 and reaches the floor.  No tolerance is involved beyond the
 message's own rounding (%.3g and %.6g: the report's numbers printed that way
@@ -101,6 +103,18 @@ with tempfile.TemporaryDirectory() as tmp:
                            text=True)
         if p.returncode != 2:
             fail("--min-quality %s: exit %d, expected 2" % (bad, p.returncode))
+
+    # a floor neither road reaches: the layout road's mesh is kept when the
+    # split road's is no better (half disc: 0.385 against 0.308, measured
+    # 2026-11-26), and the run exits 8 naming the layout road
+    rep_hd = os.path.join(tmp, "half_disc_floor.json")
+    p = subprocess.run([sq, "mesh", os.path.join(ex, "half_disc.step"), "--min-quality", "0.99",
+                        "--no-output", "--report", rep_hd], capture_output=True, text=True)
+    if p.returncode != 8 or "kept the layout road" not in p.stderr:
+        fail("half disc, --min-quality 0.99: exit %d, expected 8 with the layout road kept: %s"
+             % (p.returncode, p.stderr))
+    elif json.load(open(rep_hd))["road"] != "layout":
+        fail("half disc, --min-quality 0.99: the split road's mesh kept, not the better one")
 
     # every planar example passes the default floor
     for path in sorted(glob.glob(os.path.join(ex, "*.step"))):
