@@ -203,7 +203,7 @@ def main():
                 "near-tangent holes, slivers, needles, near-180 degree corners, 50-500 edges, tilted "
                 "planes, scales 1e-6 to 1e6, and faces that are not faces). Face i depends on the seed "
                 "and i only, so the corpus is the same on every machine; tests/t701-stress-corpus.py "
-                "meshes 30 of them. Each face: `semquad mesh FILE -q --report R -o M` at the default "
+                "meshes 34 of them. Each face: `semquad mesh FILE -q --report R -o M` at the default "
                 "size.\n\n"
                 "`/usr/bin/python3 bench/stress_corpus.py CORPUS --seed %d --count %d` then "
                 "`/usr/bin/python3 bench/stress_bench.py CORPUS --doc docs/benchmarks.md` "

@@ -5,9 +5,10 @@ The faces are written by bench/stress_corpus.py itself, seed 1, so every clone
 meshes the same faces (face i depends on the seed and i only).  The subset: the
 first two faces of each class (many_sided excepted: none is fast) that took under
 3 s (debug build) in the full benchmark, whatever their outcome then.  A valid face must mesh at the default size:
-exit 0 (exit 8, the mesh written, for the faces of BELOW_FLOOR), every scaled
-Jacobian > 0 (the report's min_scaled_jacobian, a positive number, no inverted
-quad) and the interior irregular vertices reported.  A face of
+exit 0, every scaled Jacobian at or above the default quality floor 0.01 (the
+report's min_scaled_jacobian, the same Bézier bound the command compares with the
+floor, so the check is exact; no inverted quad) and the interior irregular
+vertices reported.  A face of
 class `invalid` (not a face at all: its loops cross) must be refused: exit 4, one
 line on stderr, no mesh file.  No tolerance is involved: the checks are signs and
 exit statuses.
@@ -19,6 +20,11 @@ stage that fails; every other valid face must be meshed by the layout road,
 so a regression there fails the test even though the split road would mesh
 the face.  A listed face whose layout road starts meshing is reported, so
 that the list only shrinks.
+
+The quality fallback: on the faces of BELOW_FLOOR the layout road's mesh is
+valid but its worst quad is below the floor; the split road must then be
+tried and the better mesh kept (the report's "road_reason" names the floor),
+so these faces exit 0 above the floor; without the fallback they exit 8.
 
 0053_holes is left out: its layout repairs stop at their work bound after 10 s
 or more (t518 checks that it answers).
@@ -39,12 +45,12 @@ SEED = 1
 # the first two faces of every class that took under 3 s in the full benchmark
 # (docs/benchmarks.md, "Stress corpus")
 # (many_sided has none: 8.5 s and more), and 47, the first invalid face whose hole
-# lies outside its outline (the generator once wrote only its hole)
+# lies outside its outline (the generator once wrote only its hole); then the
+# faces of BELOW_FLOOR not among them
 IDS = [1, 17, 2, 18, 3, 19, 6, 38, 7, 23, 8, 56, 9, 25, 11, 27, 13, 45, 14, 46,
-       15, 31, 47, 16, 48, 36, 100, 37, 42, 74]
+       15, 31, 47, 16, 48, 36, 100, 37, 42, 74, 280, 39, 183, 247]
 # faces whose layout road fails, by the stage that fails (issue 14)
 LAYOUT_GIVES_WAY = {
-    1: "relaxation: quads with a non-positive Jacobian",
     46: "relaxation: quads with a non-positive Jacobian (scaled face)",
     2: "layout repair: repair line longer than the bound",
     19: "layout repair: repair line longer than the bound",
@@ -57,14 +63,20 @@ LAYOUT_GIVES_WAY = {
     37: "layout: a 3-corner patch left",
     8: "relaxation: quads with a non-positive Jacobian (near-tangent hole)",
 }
-# valid faces whose mesh at the default size has a worst quad below the default
-# quality floor (0.01, include/semquad.h): written, then exit 8 (issue 21),
-# with the worst scaled Jacobian by Bézier bounds measured 2026-11-26; a
-# listed face that reaches the floor is reported, so that the list only shrinks
+# valid faces whose layout road's mesh at the default size has a worst quad
+# below the default quality floor (0.01, include/semquad.h), with that worst
+# scaled Jacobian (Bézier bound) measured 2026-11-26: the split road is tried
+# and kept when better (all six: 0.24-0.33); they are the six exit-8 faces of
+# the full benchmark at 3267bcf
 BELOW_FLOOR = {
-    56: "near-tangent hole: 1.1e-5",
+    56: "near-tangent hole: 4.2e-6",
+    280: "near-tangent hole: 4.2e-3",
     100: "fillet: 3.5e-3",
+    39: "tiny edge: 3.9e-3",
+    183: "tiny edge: 3.0e-3",
+    247: "tiny edge: 9.97e-3",
 }
+MIN_QUALITY = 0.01  # the command's default floor, include/semquad.h SQ_MIN_QUALITY
 # a face that hangs fails the test instead of the whole suite waiting for it
 FACE_TIMEOUT = 120
 # .ci/run's sanitized build (ASAN_OPTIONS set) runs several times slower; the
@@ -83,8 +95,8 @@ def check(e, tmp):
         return "no answer after %d s" % FACE_TIMEOUT, None
     err = [ln for ln in p.stderr.splitlines() if ln.strip()]
     last = err[-1] if err else ""
-    road = json.load(open(rep)).get("road") if p.returncode in (0, 8) else None
-    return outcome(e, p, err, last, msh, rep), road
+    r = json.load(open(rep)) if p.returncode in (0, 8) else {}
+    return outcome(e, p, err, last, msh, rep), r.get("road"), r.get("road_reason", "")
 
 
 def outcome(e, p, err, last, msh, rep):
@@ -97,15 +109,12 @@ def outcome(e, p, err, last, msh, rep):
         if os.path.exists(msh):
             return "refused but wrote %s" % msh
         return None
-    want = 8 if e["id"] in BELOW_FLOOR else 0
-    if p.returncode != want:
-        return "exit %d, expected %d: %s" % (p.returncode, want, last)
-    if want == 8 and not (os.path.exists(msh) and "worst quad" in last):
-        return "exit 8 without the mesh written or the worst quad named: %s" % last
+    if p.returncode != 0:
+        return "exit %d, expected 0: %s" % (p.returncode, last)
     m = json.load(open(rep))["mesh"]
-    if not m.get("min_scaled_jacobian", 0) > 0 or m.get("inverted") != 0:
-        return "min scaled Jacobian %s, %s inverted, expected > 0 and 0" % (
-            m.get("min_scaled_jacobian"), m.get("inverted"))
+    if not m.get("min_scaled_jacobian", 0) >= MIN_QUALITY or m.get("inverted") != 0:
+        return "min scaled Jacobian %s, %s inverted, expected >= %g and 0" % (
+            m.get("min_scaled_jacobian"), m.get("inverted"), MIN_QUALITY)
     if not isinstance(m.get("irregular_interior_vertices"), int):
         return "no interior irregular vertex count in the report"
     return None
@@ -120,8 +129,10 @@ def main():
                 print("%s: the generator did not write the face it drew: %s" % (e["file"], e["invalid_reason"]))
                 fails += 1
                 continue
-            why, road = check(e, tmp)
+            why, road, reason = check(e, tmp)
             gives_way = LAYOUT_GIVES_WAY.get(e["id"])
+            if e["id"] in BELOW_FLOOR and road == "split" and "--min-quality" in reason:
+                gives_way = "the layout road's mesh below the quality floor"
             if not why and road == "split" and not gives_way:
                 why = "meshed by the split road: the layout road fails (a regression)"
             elif not why and road == "layout" and gives_way:

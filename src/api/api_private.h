@@ -49,7 +49,8 @@ struct sq_quad_layout {
 struct sq_mesh {
     sq_api_face face;
     sq_face_info info;
-    sq_layout_result r;   /* zeroed on the split road and in a refined mesh */
+    sq_layout_result r;   /* the layout road's, if it ran (reported on that road only);
+                             zeroed in a refined mesh */
     sq_road_choice road;
     sq_quad_mesh *q;
     sq_quad_quality quality;

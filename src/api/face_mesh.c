@@ -36,11 +36,16 @@ static void cusp_hint(const cad_model *model, const sq_face_info *fi, sq_error *
  * not do on a face the split road may mesh; not a usage, input or output
  * error, not a pattern the user imposed, not boundary layers (which need
  * the layout's chords). */
+static int split_road_allowed(const sq_layout_options *lo, const sq_mesher_options *mo)
+{
+    return !lo->singularities && mo->nbl == 0;
+}
+
 static int takes_split_road(sq_status st, const sq_layout_options *lo, const sq_mesher_options *mo)
 {
     return (st == SQ_ERR_LAYOUT || st == SQ_ERR_INTERNAL || st == SQ_ERR_GEOMETRY ||
             st == SQ_ERR_PATTERN) &&
-           !lo->singularities && mo->nbl == 0;
+           split_road_allowed(lo, mo);
 }
 
 static void layout_progress(const sq_options *o, const sq_layout_result *r,
@@ -170,8 +175,78 @@ static sq_status split_road(sq_mesh *h, const sq_mesher_options *mo, const sq_op
     return st;
 }
 
+/* The mesh one road made, set aside while the other one runs. */
+typedef struct {
+    sq_quad_mesh *q;
+    sq_quad_quality quality;
+    double *sjac, *eta;
+} road_mesh;
+
+static road_mesh take_mesh(sq_mesh *h)
+{
+    road_mesh m = {h->q, h->quality, h->sjac, h->eta};
+    h->q = NULL;
+    h->sjac = h->eta = NULL;
+    return m;
+}
+
+static void put_mesh(sq_mesh *h, road_mesh *m)
+{
+    sq_quad_mesh_free(&h->q);
+    free(h->sjac);
+    free(h->eta);
+    h->q = m->q;
+    h->quality = m->quality;
+    h->sjac = m->sjac;
+    h->eta = m->eta;
+}
+
+static void free_mesh(road_mesh *m)
+{
+    sq_quad_mesh_free(&m->q);
+    free(m->sjac);
+    free(m->eta);
+}
+
+/* The layout road's mesh is valid but below the quality floor (a
+ * near-degenerate quad in a narrow gap or at a tiny edge, which the
+ * layout's patches cannot avoid): the split road is tried and the mesh
+ * whose worst scaled Jacobian is the larger is kept, the layout's on a
+ * tie or when the split road fails. */
+static void try_split_for_quality(sq_mesh *h, const sq_mesher_options *mo, const sq_options *o)
+{
+    double t_layout = h->t.mesh;
+    road_mesh layout = take_mesh(h);
+    double sj = layout.quality.min_scaled_jacobian;
+    sq_api_log(o, SQ_LOG_NOTE,
+               "the layout road's worst quad has scaled Jacobian %.3g < --min-quality %g; trying "
+               "the split road",
+               sj, o->min_quality);
+    sq_error split_err = {0};
+    sq_status st = split_road(h, mo, o, &split_err);
+    h->t.mesh += t_layout;
+    if (st == SQ_OK && h->quality.min_scaled_jacobian > sj) {
+        sq_api_log(o, SQ_LOG_NOTE, "kept the split road (worst scaled Jacobian %.3g > %.3g)",
+                   h->quality.min_scaled_jacobian, sj);
+        h->road.name = "split";
+        snprintf(h->road.reason, sizeof h->road.reason,
+                 "worst quad's scaled Jacobian %.3g < --min-quality %g, the split road's %.3g", sj,
+                 o->min_quality, h->quality.min_scaled_jacobian);
+        free_mesh(&layout);
+        return;
+    }
+    if (st == SQ_OK)
+        sq_api_log(o, SQ_LOG_NOTE, "kept the layout road (the split road's worst scaled "
+                   "Jacobian %.3g is no better)", h->quality.min_scaled_jacobian);
+    else
+        sq_api_log(o, SQ_LOG_NOTE, "kept the layout road (the split road failed: %s)",
+                   split_err.msg);
+    put_mesh(h, &layout);
+}
+
 /* Both roads as the options say: the layout road first unless told
- * otherwise, the split road where it gives way. */
+ * otherwise, the split road where it gives way or where its mesh is below
+ * the quality floor and the split road's is better. */
 static sq_status run_roads(sq_mesh *h, sq_api_road road, const sq_layout_options *lo,
                            sq_mesher_options *mo, const sq_options *o, sq_error *err)
 {
@@ -186,7 +261,10 @@ static sq_status run_roads(sq_mesh *h, sq_api_road road, const sq_layout_options
         sq_quad_mesh_free(&h->q);
         st = SQ_OK;
     }
-    if (st == SQ_OK && !strcmp(h->road.name, "split")) st = split_road(h, mo, o, err);
+    if (st == SQ_OK && !strcmp(h->road.name, "split")) return split_road(h, mo, o, err);
+    if (st == SQ_OK && road == SQ_API_ROAD_AUTO && split_road_allowed(lo, mo) &&
+        h->quality.min_scaled_jacobian < o->min_quality)
+        try_split_for_quality(h, mo, o);
     return st;
 }
 

@@ -113,7 +113,7 @@ static const sq_cli_opt mesh_opts[] = {
      .target = SQ_CLI_AT(opt.max_quads)},
     {.name = "road", .kind = SQ_CLI_WORD, .value = "auto|layout|split", .def = "auto",
      .help = "layout: field, layout, patches; split: triangles split into quads; auto: layout, "
-             "else split",
+             "else split, and the better of both when the layout's is below --min-quality",
      .target = SQ_CLI_AT(opt.road)},
     {.name = "min-quality", .kind = SQ_CLI_REAL, .value = "X", .lo = 0.0, .hi = 1.0, .def = "0.01",
      .help = "a mesh whose worst quad's scaled Jacobian (min det J / max det J, proven by Bezier "
@@ -143,7 +143,8 @@ const sq_cli_command sq_cli_mesh = {
                "transfinite interpolation, relaxed to the minimum of Winslow's energy with the "
                "boundary vertices sliding on the CAD curves. Quality summary on stdout, "
                "progress on stderr. Where no valid layout is found, the split road meshes the "
-               "face all the same, with a note (--road auto).",
+               "face all the same, with a note, and where the layout road's worst quad is below "
+               "--min-quality the split road is tried and the better mesh kept (--road auto).",
     .example = "semquad mesh examples/half_disc.step --order 4 --size 0.1 -o half_disc.msh",
     .opts = mesh_opts,
     .run = run_mesh};
