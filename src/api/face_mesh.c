@@ -54,9 +54,7 @@ static void layout_progress(const sq_options *o, const sq_layout_result *r,
                t->critical_points + t->trace + t->layout);
 }
 
-/* The quality of h->q, per quad (the public arrays) and in sum: once per
- * mesh made. */
-static sq_status per_quad_quality(sq_mesh *h, sq_error *err)
+sq_status sq_api_mesh_quality(sq_mesh *h, sq_error *err)
 {
     size_t n = (size_t)(h->q->nquads ? h->q->nquads : 1);
     free(h->sjac);
@@ -87,7 +85,7 @@ static sq_status mesh_halving(mesh_fn mesh, void *ctx, sq_mesher_options mo, dou
             sq_quad_mesh_free(m);
         }
         st = mesh(ctx, &mo, m, err);
-        if (st == SQ_OK) st = per_quad_quality(h, err);
+        if (st == SQ_OK) st = sq_api_mesh_quality(h, err);
         if (o->size > 0.0 || st != SQ_OK || q->inverted == 0 || k == DEFAULT_SIZE_HALVINGS) break;
     }
     if (st == SQ_OK && q->inverted > 0)
@@ -192,9 +190,7 @@ static sq_status run_roads(sq_mesh *h, sq_api_road road, const sq_layout_options
     return st;
 }
 
-/* The plain arrays of the public accessors (the quality ones are made
- * with the mesh: per_quad_quality). */
-static sq_status fill_arrays(sq_mesh *h, sq_error *err)
+sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err)
 {
     const sq_quad_mesh *q = h->q;
     h->xyz = malloc(3 * (size_t)q->nnodes * sizeof *h->xyz);
@@ -247,7 +243,7 @@ sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_
     if (st == SQ_OK && o->size > 0.0)
         st = sq_mesher_check_size(h->info.area, mo.size, mo.max_quads, err);
     if (st == SQ_OK) st = run_roads(h, road, &lo, &mo, o, err);
-    if (st == SQ_OK) st = fill_arrays(h, err);
+    if (st == SQ_OK) st = sq_api_mesh_arrays(h, err);
     if (st != SQ_OK) {
         sq_mesh_free(&h);
         return st;
@@ -309,6 +305,7 @@ void sq_mesh_free(sq_mesh **m)
     sq_layout_result_free(&h->r);
     sq_face_info_free(&h->info);
     sq_api_face_close(&h->face);
+    sq_api_domain_free(&h->dom);
     free(h);
     *m = NULL;
 }
@@ -390,6 +387,7 @@ static sq_mesh_timings timings(const sq_mesh *m)
 sq_status sq_mesh_report(const sq_mesh *m, char **json, sq_error *err)
 {
     sq_mesh_timings t = timings(m);
+    if (m->dom) return sq_api_domain_report(m, &t, json, err);
     sq_api_text txt;
     SQ_TRY(sq_api_text_open(&txt, err));
     sq_print_mesh_report(txt.fp, m->face.model->path, m->face.model->cad, m->face.index, &m->info,
@@ -400,6 +398,7 @@ sq_status sq_mesh_report(const sq_mesh *m, char **json, sq_error *err)
 sq_status sq_mesh_write_report(const sq_mesh *m, const char *path, sq_error *err)
 {
     sq_mesh_timings t = timings(m);
+    if (m->dom) return sq_api_domain_write_report(m, &t, path, err);
     return sq_write_mesh_report(path, m->face.model->path, m->face.model->cad, m->face.index,
                                 &m->info, &m->road, &m->r, m->q, &m->quality, &t, err);
 }
