@@ -83,6 +83,10 @@ struct sq_mesh {
 sq_status sq_api_mesh_quality(sq_mesh *h, sq_error *err);
 sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err);
 
+/* Appended to a cusp's refusal (sq_face_check_cusps): why healing left
+ * it, the option that would blunt it. */
+void sq_api_cusp_hint(const cad_model *model, const sq_face_info *fi, sq_error *err);
+
 /* The report of a mesh of several faces (model_mesh_report.c). */
 sq_status sq_api_domain_report(const sq_mesh *m, const sq_mesh_timings *t, char **json,
                                sq_error *err);

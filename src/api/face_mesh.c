@@ -15,10 +15,9 @@
 /* without --size: halvings of the default size tried when quads fold */
 #define DEFAULT_SIZE_HALVINGS 3
 
-/* Appended to a cusp's refusal: why healing left it, the option that
- * would blunt it (cad.h: a segment of CAD_CUSP_MIN_SEGMENT of the face's
- * size at least; the 2D box's diagonal bounds that size from above). */
-static void cusp_hint(const cad_model *model, const sq_face_info *fi, sq_error *err)
+/* cad.h: a segment of CAD_CUSP_MIN_SEGMENT of the face's size at least
+ * blunts a cusp; the 2D box's diagonal bounds that size from above. */
+void sq_api_cusp_hint(const cad_model *model, const sq_face_info *fi, sq_error *err)
 {
     size_t len = strlen(err->msg);
     double tol = cad_model_heal_tolerance(model);
@@ -238,7 +237,7 @@ sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_
     if (st == SQ_OK) sq_api_log(o, SQ_LOG_INFO, "read %s (%.3f s)", model->path, model->t_read);
     if (st == SQ_OK) st = sq_face_info_compute(h->face.cad, &h->info, err);
     if (st == SQ_OK && (st = sq_face_check_cusps(&h->info, err)) != SQ_OK)
-        cusp_hint(model->cad, &h->info, err);
+        sq_api_cusp_hint(model->cad, &h->info, err);
     /* a size that would exhaust memory is refused before any work */
     if (st == SQ_OK && o->size > 0.0)
         st = sq_mesher_check_size(h->info.area, mo.size, mo.max_quads, err);

@@ -19,8 +19,9 @@ void sq_api_domain_free(sq_api_domain **d)
     *d = NULL;
 }
 
-/* The faces a model mesh takes without a list: every planar face that is
- * not broken. */
+/* The faces a model mesh takes without a list: every planar face (a
+ * broken one among them is refused with its reason, as alone); none
+ * planar: the default face, refused as sq_face_mesh refuses it. */
 static sq_status planar_faces(const sq_model *m, int **faces, int *n, sq_error *err)
 {
     int nf = cad_model_num_faces(m->cad);
@@ -28,9 +29,8 @@ static sq_status planar_faces(const sq_model *m, int **faces, int *n, sq_error *
     if (!*faces) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     *n = 0;
     for (int f = 0; f < nf; f++)
-        if (cad_model_face_planar(m->cad, f) && cad_model_face_status(m->cad, f, NULL) != CAD_FACE_BROKEN)
-            (*faces)[(*n)++] = f;
-    if (*n == 0) return SQ_FAIL(err, SQ_ERR_GEOMETRY, "%s has no planar face to mesh", m->path);
+        if (cad_model_face_planar(m->cad, f)) (*faces)[(*n)++] = f;
+    if (*n == 0) (*faces)[(*n)++] = -1;
     return SQ_OK;
 }
 
@@ -69,7 +69,11 @@ static sq_status faces_load(const sq_model *m, const int *faces, int n, const sq
         f->n = k + 1;
         f->cad[k] = f->face[k].cad;
         SQ_TRY(sq_face_info_compute(f->cad[k], &f->info[k], err));
-        SQ_TRY(sq_face_check_cusps(&f->info[k], err));
+        sq_status st = sq_face_check_cusps(&f->info[k], err);
+        if (st != SQ_OK) {
+            sq_api_cusp_hint(m->cad, &f->info[k], err);
+            return st;
+        }
     }
     return SQ_OK;
 }
