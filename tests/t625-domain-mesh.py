@@ -19,7 +19,10 @@ circle-square file too.  Each at order Q = 8, read back with Gmsh's reader:
   - all quads valid: the report's Bézier lower bound of det J / max |det J|
     is positive for every quad (inverted 0);
   - every node on a shared curve is used by quads of both faces sharing it,
-    and no quad side on it is a boundary line element.
+    and no quad side on it is a boundary line element;
+  - the three rectangles conform on the layout road (0 irregular vertices);
+    the curved domains, whose layouts disagree on the shared curve, on the
+    split road.
 usage: t625-domain-mesh.py SEMQUAD DOMAIN_FACES_PY"""
 import json
 import math
@@ -55,6 +58,13 @@ def check(name, step, size, nfaces, shared, areas, tmp):
     m = report["mesh"]
     if len(report["faces"]) != nfaces:
         fails.append("%s: %d faces meshed, expected %d" % (name, len(report["faces"]), nfaces))
+    roads = [f["road"] for f in report["faces"]]
+    # three rectangles: each face's layout is one patch with the same chord
+    # counts on the shared edges, so the layout road conforms as it is:
+    # block-structured, no irregular vertex
+    if name == "three_row" and (roads != ["layout"] * 3 or m["irregular_interior_vertices"]):
+        fails.append("%s: roads %s, %d irregular vertices; expected the layout road, 0" %
+                     (name, roads, m["irregular_interior_vertices"]))
     exact = sum(areas) if areas else m["area_exact"]
     if abs(m["area"] - exact) > 1e-8 * exact:
         fails.append("%s: area %.17g, exact %.17g" % (name, m["area"], exact))

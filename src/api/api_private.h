@@ -83,6 +83,11 @@ struct sq_mesh {
 sq_status sq_api_mesh_quality(sq_mesh *h, sq_error *err);
 sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err);
 
+/* sq_face_mesh with the vertices on the face's edges where held_edges[e]
+ * is 1 held where they are placed (a domain's shared curves; NULL: none). */
+sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
+                           const int *held_edges, sq_mesh **out, sq_error *err);
+
 /* Appended to a cusp's refusal (sq_face_check_cusps): why healing left
  * it, the option that would blunt it. */
 void sq_api_cusp_hint(const cad_model *model, const sq_face_info *fi, sq_error *err);

@@ -212,6 +212,12 @@ sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err)
 sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_mesh **out,
                        sq_error *err)
 {
+    return sq_api_face_mesh(model, face, o, NULL, out, err);
+}
+
+sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
+                           const int *held_edges, sq_mesh **out, sq_error *err)
+{
     *out = NULL;
     sq_options def;
     o = sq_api_options(o, &def);
@@ -221,6 +227,7 @@ sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_
     SQ_TRY(sq_api_parse_road(o->road, &road, err));
     SQ_TRY(sq_api_layout_options(o, 1, &lo, err));
     SQ_TRY(sq_api_mesher_options(o, &mo, err));
+    mo.held_edges = held_edges;
     sq_mesh *h = calloc(1, sizeof *h);
     if (!h || !(h->t_write = calloc(1, sizeof *h->t_write))) {
         free(h);

@@ -78,21 +78,46 @@ static sq_status faces_load(const sq_model *m, const int *faces, int n, const sq
     return SQ_OK;
 }
 
-/* The faces without an interface, each by its own roads (sq_face_mesh) at
- * the domain's size; their meshes taken into f->q. */
-static sq_status mesh_alone(const sq_model *m, const sq_domain *d, faces_open *f,
-                            const sq_options *o, const char **road, sq_error *err)
+/* The faces with (shares 1) or without (0) a shared curve, each by its
+ * own roads (as o says) at the domain's size, the vertices on its shared
+ * curves held; their meshes taken into f->q. */
+static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
+                           const sq_options *o, int shares, const char **road, sq_error *err)
 {
     for (int k = 0; k < f->n; k++) {
-        if (sq_domain_face_shares(d, k)) continue;
+        if (sq_domain_face_shares(d, k) != shares) continue;
+        int ne = cad_face_num_edges(f->cad[k]);
+        int *held = calloc((size_t)ne + 1, sizeof(int));
+        if (!held) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        for (int e = 0; e < ne; e++) held[e] = d->curves[d->curve_of[k][e]].face[1] >= 0;
         sq_mesh *h = NULL;
-        SQ_TRY(sq_face_mesh(m, f->face[k].index, o, &h, err));
+        sq_status st = sq_api_face_mesh(m, f->face[k].index, o, shares ? held : NULL, &h, err);
+        free(held);
+        if (st != SQ_OK) return st;
         road[k] = !strcmp(h->road.name, "split") ? "split" : "layout";
         f->q[k] = h->q;
         h->q = NULL;
         sq_mesh_free(&h);
     }
     return SQ_OK;
+}
+
+/* The faces sharing curves by the layout road, each alone with its shared
+ * curves' vertices held, merged: conforming only where their layouts put
+ * the same vertices on each shared curve (faces whose chords agree: three
+ * rectangles in a row); *merged NULL and a note where they do not. */
+static sq_status try_layouts(const sq_model *m, const sq_domain *d, faces_open *f,
+                             const sq_options *o, const int *faces, const char **road,
+                             sq_quad_mesh **merged, sq_error *err)
+{
+    sq_options ol = *o;
+    ol.road = "layout";
+    sq_status st = mesh_each(m, d, f, &ol, 1, road, err);
+    if (st == SQ_OK) st = sq_domain_merge(d, f->q, faces, o->size, merged, err);
+    if (st == SQ_OK) return SQ_OK;
+    for (int k = 0; k < f->n; k++)
+        if (sq_domain_face_shares(d, k)) sq_quad_mesh_free(&f->q[k]);
+    return st;
 }
 
 /* The domain's record in h->dom, and its per-quad faces. */
@@ -141,15 +166,26 @@ static sq_status mesh_domain(const sq_model *m, const int *faces, int n, const s
     double tol = fmax(cad_model_heal_tolerance(m->cad), 1e-6 * os.size);
     if (st == SQ_OK) st = sq_domain_build(n, f.cad, f.info, tol, &d, err);
     if (st == SQ_OK && d.ninterfaces > 0)
-        sq_api_log(o, SQ_LOG_NOTE,
-                   "%d faces share %d curves: those faces take the split road, whose triangulations "
-                   "agree on the shared curves (docs/domains.md)",
-                   n, d.ninterfaces);
-    if (st == SQ_OK) st = sq_domain_mesh_split(&d, &mo, f.q, &rounds, err);
-    for (int k = 0; k < n && st == SQ_OK; k++)
-        if (f.q[k]) road[k] = "split";
-    if (st == SQ_OK) st = mesh_alone(m, &d, &f, &os, road, err);
-    if (st == SQ_OK) st = sq_domain_merge(&d, f.q, faces, os.size, &h->q, err);
+        sq_api_log(o, SQ_LOG_NOTE, "%d faces share %d curves (docs/domains.md)", n, d.ninterfaces);
+    sq_api_road want = SQ_API_ROAD_AUTO;
+    if (st == SQ_OK) st = sq_api_parse_road(o->road, &want, err);
+    if (st == SQ_OK) st = mesh_each(m, &d, &f, &os, 0, road, err);
+    if (st == SQ_OK && want != SQ_API_ROAD_SPLIT) {
+        sq_error e2;
+        sq_error_clear(&e2);
+        sq_status s2 = d.ninterfaces ? try_layouts(m, &d, &f, &os, faces, road, &h->q, &e2)
+                                     : sq_domain_merge(&d, f.q, faces, os.size, &h->q, &e2);
+        if (s2 != SQ_OK && (want == SQ_API_ROAD_LAYOUT || !d.ninterfaces)) *err = e2, st = s2;
+        else if (s2 != SQ_OK)
+            sq_api_log(o, SQ_LOG_NOTE, "the layout road gives no conforming mesh of the faces (%s); "
+                                       "the faces sharing curves take the split road", e2.msg);
+    }
+    if (st == SQ_OK && !h->q) {
+        st = sq_domain_mesh_split(&d, &mo, f.q, &rounds, err);
+        for (int k = 0; k < n && st == SQ_OK; k++)
+            if (sq_domain_face_shares(&d, k)) road[k] = "split";
+        if (st == SQ_OK) st = sq_domain_merge(&d, f.q, faces, os.size, &h->q, err);
+    }
     if (st == SQ_OK) st = keep_domain(h, &d, &f, road, rounds, err);
     sq_domain_free(&d);
     faces_close(&f);

@@ -6,7 +6,8 @@
  *     the same curve as an edge of another face (cad_edges_shared: the same
  *     OCCT edge, or coincident within the tolerance); a curve of one face
  *     is a boundary curve (a boundary tag), a curve of two an interface;
- *  2. the faces with an interface take the split road, whose boundary
+ *  2. the faces with an interface take the split road (where their layouts
+ *     do not agree on the interfaces: docs/domains.md), whose boundary
  *     vertices are the triangulation's: each face is triangulated, the
  *     vertices every face put on each interface are joined into one list,
  *     and the faces are triangulated again from that list until all agree
@@ -52,7 +53,7 @@ void sq_domain_free(sq_domain *d); /* frees, zeroes */
 int sq_domain_face_shares(const sq_domain *d, int f);
 
 /* Designs 2 and 3: the split road's meshes of the faces with an
- * interface (out[f], NULL for the others), at mo's size. */
+ * interface into out[f] (the others' left as they are), at mo's size. */
 sq_status sq_domain_mesh_split(const sq_domain *d, const sq_mesher_options *mo, sq_quad_mesh **out,
                                int *rounds, sq_error *err);
 

@@ -180,7 +180,6 @@ static sq_status round_once(const sq_domain *d, const sq_mesher_options *mo, spl
 sq_status sq_domain_mesh_split(const sq_domain *d, const sq_mesher_options *mo, sq_quad_mesh **out,
                                int *rounds, sq_error *err)
 {
-    for (int f = 0; f < d->nfaces; f++) out[f] = NULL;
     split_work w = {0};
     sq_status st = work_alloc(d, &w, err);
     int agreed = 0, r = 0;
@@ -202,7 +201,8 @@ sq_status sq_domain_mesh_split(const sq_domain *d, const sq_mesher_options *mo, 
         st = sq_mesh_split_triangulation(d->faces[f], &d->info[f], &w.tri[f], &o, &out[f], err);
     }
     if (st != SQ_OK)
-        for (int f = 0; f < d->nfaces; f++) sq_quad_mesh_free(&out[f]);
+        for (int f = 0; f < d->nfaces; f++)
+            if (sq_domain_face_shares(d, f)) sq_quad_mesh_free(&out[f]);
     work_free(d, &w);
     return st;
 }
