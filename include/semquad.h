@@ -329,7 +329,8 @@ SQ_API const int *sq_mesh_quad_faces(const sq_mesh *m);
 
 /* Element order Q; each quad has (Q+1)^2 nodes. */
 SQ_API int sq_mesh_order(const sq_mesh *m);
-/* "layout" or "split": the road that made the mesh. */
+/* "layout" or "split": the road that made the mesh; "domain" for a mesh
+ * of several faces (its report gives each face's road). */
 SQ_API const char *sq_mesh_road(const sq_mesh *m);
 
 /* Nodes: xyz[3k..3k+2], in the mesh's frame (sq_mesh_frame); for a planar
