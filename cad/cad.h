@@ -204,6 +204,20 @@ sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2
 sq_status cad_face_edge_tangent_near(const cad_face *face, int edge, const double p[2],
                                      double tangent[2], sq_error *err);
 
+/* ---- edges faces share (cad_shared.cpp; docs/domains.md) ----------------- */
+typedef enum {
+    CAD_SHARED_NONE = 0,
+    CAD_SHARED_SAME = 1,      /* one OCCT edge of both faces (a sewn or fragmented file) */
+    CAD_SHARED_COINCIDENT = 2 /* two edges that coincide within the tolerance (faces not sewn) */
+} cad_shared_kind;
+/* Whether edge ea of face a and edge eb of face b are one boundary curve of
+ * a 2D domain: the same OCCT edge, or two edges of equal length whose points
+ * at 0, 1/4, 1/2, 3/4 and all of their arc length coincide in 3D within tol
+ * (either way round).  *reversed: b travels it against a (faces side by side
+ * travel a shared edge in opposite senses). */
+sq_status cad_edges_shared(const cad_face *a, int ea, const cad_face *b, int eb, double tol,
+                           cad_shared_kind *kind, int *reversed, sq_error *err);
+
 /* ---- constrained Delaunay refinement (CGAL) ------------------------------ */
 
 /* Local target size at a point; return <= 0 for "no bound here". */

@@ -547,6 +547,11 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
 
 } // namespace
 
+const TopoDS_Edge *sqcad::face_edge(const cad_face *face, int edge)
+{
+    return face && edge >= 0 && edge < (int)face->edges.size() ? &face->edges[(size_t)edge].edge : nullptr;
+}
+
 extern "C" {
 
 const char *cad_edge_type_name(cad_edge_type type)

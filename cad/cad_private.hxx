@@ -7,6 +7,7 @@
 
 #include <Standard_Failure.hxx>
 #include <TopTools_IndexedMapOfShape.hxx>
+#include <TopoDS_Edge.hxx>
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <gp_Pln.hxx>
@@ -74,6 +75,9 @@ void heal_model(cad_model *m, double tol, bool given);
 // cusp that can be blunted within tol.
 TopoDS_Face blunt_cusps(const TopoDS_Face &face, double tol, double prec,
                         std::vector<heal_record> &out);
+
+// The OCCT edge under edge `edge` of a face (cad_face.cpp), NULL if out of range.
+const TopoDS_Edge *face_edge(const cad_face *face, int edge);
 
 } // namespace sqcad
 

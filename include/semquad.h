@@ -311,9 +311,26 @@ SQ_API sq_status sq_face_mesh(const sq_model *m, int face, const sq_options *opt
                               sq_error *err);
 SQ_API void sq_mesh_free(sq_mesh **m);
 
+/* Mesh faces faces[0..nfaces-1] of m (faces NULL or nfaces 0: every
+ * planar face that is not broken) as one conforming mesh (docs/domains.md):
+ * one face is sq_face_mesh; faces sharing a curve (the same CAD edge, or
+ * coincident edges of unsewn faces) share its nodes, high-order ones
+ * included.  Nodes in the first face's frame (the faces must lie in one
+ * plane: SQ_ERR_GEOMETRY otherwise); sq_mesh_quad_faces gives each quad's
+ * face; boundary tags number the domain's boundary curves (the report
+ * names each curve's face and edge); the writers give each face its own
+ * group.  SQ_ERR_LAYOUT if the faces' meshes do not conform. */
+SQ_API sq_status sq_model_mesh(const sq_model *m, const int *faces, int nfaces,
+                               const sq_options *opt, sq_mesh **out, sq_error *err);
+/* Faces of the mesh (1 for sq_face_mesh's), and the CAD face of each quad
+ * (NULL for one face: every quad is on sq_mesh_face).  Borrowed. */
+SQ_API int sq_mesh_num_faces(const sq_mesh *m);
+SQ_API const int *sq_mesh_quad_faces(const sq_mesh *m);
+
 /* Element order Q; each quad has (Q+1)^2 nodes. */
 SQ_API int sq_mesh_order(const sq_mesh *m);
-/* "layout" or "split": the road that made the mesh. */
+/* "layout" or "split": the road that made the mesh; "domain" for a mesh
+ * of several faces (its report gives each face's road). */
 SQ_API const char *sq_mesh_road(const sq_mesh *m);
 
 /* Nodes: xyz[3k..3k+2], in the mesh's frame (sq_mesh_frame); for a planar

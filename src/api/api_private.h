@@ -5,6 +5,7 @@
 #define SQ_API_PRIVATE_H
 
 #include "cad.h"
+#include "domain.h"
 #include "layout_pipeline.h"
 #include "quad_mesher.h"
 #include "semquad.h"
@@ -46,8 +47,22 @@ struct sq_quad_layout {
                         writers take a const handle: the clock is apart) */
 };
 
+/* What a mesh of several faces adds (model_mesh.c): the faces, the
+ * road each took, their exact areas, the curves they share. */
+typedef struct {
+    int nfaces;
+    int *face;           /* CAD face numbers */
+    const char **road;   /* "layout" or "split" */
+    double *area;        /* exact (Green's theorem on the CAD curves) */
+    int ncurves, ntags, rounds;
+    sq_domain_curve *curves;
+    int *quad_face;      /* per quad: its CAD face (sq_mesh_quad_faces) */
+} sq_api_domain;
+void sq_api_domain_free(sq_api_domain **d);
+
 struct sq_mesh {
-    sq_api_face face;
+    sq_api_face face; /* of a domain: its first face (the frame, the model) */
+    sq_api_domain *dom; /* NULL: one face */
     sq_face_info info;
     sq_layout_result r;   /* the layout road's, if it ran (reported on that road only);
                              zeroed in a refined mesh */
@@ -64,12 +79,25 @@ struct sq_mesh {
     double origin[3], xdir[3], ydir[3];
 };
 
-/* The quality of h->q, per quad (the public arrays) and in sum: once per
- * mesh made (face_mesh.c; mesh_family.c for refined meshes). */
+/* The per-quad quality arrays and summary of h->q (once per mesh made),
+ * and the plain arrays of the public accessors. */
 sq_status sq_api_mesh_quality(sq_mesh *h, sq_error *err);
-/* The plain arrays of the public accessors (the quality ones are made
- * with the mesh: sq_api_mesh_quality). */
 sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err);
+
+/* sq_face_mesh with the vertices on the face's edges where held_edges[e]
+ * is 1 held where they are placed (a domain's shared curves; NULL: none). */
+sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
+                           const int *held_edges, sq_mesh **out, sq_error *err);
+
+/* Appended to a cusp's refusal (sq_face_check_cusps): why healing left
+ * it, the option that would blunt it. */
+void sq_api_cusp_hint(const cad_model *model, const sq_face_info *fi, sq_error *err);
+
+/* The report of a mesh of several faces (model_mesh_report.c). */
+sq_status sq_api_domain_report(const sq_mesh *m, const sq_mesh_timings *t, char **json,
+                               sq_error *err);
+sq_status sq_api_domain_write_report(const sq_mesh *m, const sq_mesh_timings *t,
+                                     const char *path, sq_error *err);
 
 /* Open face `face` of m (-1: the default face, logged as a note). */
 sq_status sq_api_face_open(const sq_model *m, int face, const sq_options *o, sq_api_face *f,

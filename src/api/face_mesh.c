@@ -15,10 +15,9 @@
 /* without --size: halvings of the default size tried when quads fold */
 #define DEFAULT_SIZE_HALVINGS 3
 
-/* Appended to a cusp's refusal: why healing left it, the option that
- * would blunt it (cad.h: a segment of CAD_CUSP_MIN_SEGMENT of the face's
- * size at least; the 2D box's diagonal bounds that size from above). */
-static void cusp_hint(const cad_model *model, const sq_face_info *fi, sq_error *err)
+/* cad.h: a segment of CAD_CUSP_MIN_SEGMENT of the face's size at least
+ * blunts a cusp; the 2D box's diagonal bounds that size from above. */
+void sq_api_cusp_hint(const cad_model *model, const sq_face_info *fi, sq_error *err)
 {
     size_t len = strlen(err->msg);
     double tol = cad_model_heal_tolerance(model);
@@ -291,6 +290,12 @@ sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err)
 sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_mesh **out,
                        sq_error *err)
 {
+    return sq_api_face_mesh(model, face, o, NULL, out, err);
+}
+
+sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
+                           const int *held_edges, sq_mesh **out, sq_error *err)
+{
     *out = NULL;
     sq_options def;
     o = sq_api_options(o, &def);
@@ -300,6 +305,7 @@ sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_
     SQ_TRY(sq_api_parse_road(o->road, &road, err));
     SQ_TRY(sq_api_layout_options(o, 1, &lo, err));
     SQ_TRY(sq_api_mesher_options(o, &mo, err));
+    mo.held_edges = held_edges;
     sq_mesh *h = calloc(1, sizeof *h);
     if (!h || !(h->t_write = calloc(1, sizeof *h->t_write))) {
         free(h);
@@ -316,7 +322,7 @@ sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_
     if (st == SQ_OK) sq_api_log(o, SQ_LOG_INFO, "read %s (%.3f s)", model->path, model->t_read);
     if (st == SQ_OK) st = sq_face_info_compute(h->face.cad, &h->info, err);
     if (st == SQ_OK && (st = sq_face_check_cusps(&h->info, err)) != SQ_OK)
-        cusp_hint(model->cad, &h->info, err);
+        sq_api_cusp_hint(model->cad, &h->info, err);
     /* a size that would exhaust memory is refused before any work */
     if (st == SQ_OK && o->size > 0.0)
         st = sq_mesher_check_size(h->info.area, mo.size, mo.max_quads, err);
@@ -383,6 +389,7 @@ void sq_mesh_free(sq_mesh **m)
     sq_layout_result_free(&h->r);
     sq_face_info_free(&h->info);
     sq_api_face_close(&h->face);
+    sq_api_domain_free(&h->dom);
     free(h);
     *m = NULL;
 }
@@ -464,6 +471,7 @@ static sq_mesh_timings timings(const sq_mesh *m)
 sq_status sq_mesh_report(const sq_mesh *m, char **json, sq_error *err)
 {
     sq_mesh_timings t = timings(m);
+    if (m->dom) return sq_api_domain_report(m, &t, json, err);
     sq_api_text txt;
     SQ_TRY(sq_api_text_open(&txt, err));
     sq_print_mesh_report(txt.fp, m->face.model->path, m->face.model->cad, m->face.index, &m->info,
@@ -474,6 +482,7 @@ sq_status sq_mesh_report(const sq_mesh *m, char **json, sq_error *err)
 sq_status sq_mesh_write_report(const sq_mesh *m, const char *path, sq_error *err)
 {
     sq_mesh_timings t = timings(m);
+    if (m->dom) return sq_api_domain_write_report(m, &t, path, err);
     return sq_write_mesh_report(path, m->face.model->path, m->face.model->cad, m->face.index,
                                 &m->info, &m->road, &m->r, m->q, &m->quality, &t, err);
 }

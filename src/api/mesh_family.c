@@ -45,6 +45,12 @@ sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const sq_optio
     if (levels < 0 || order < 1 || order > 10)
         return SQ_FAIL(err, SQ_ERR_USAGE, "refinement: %d levels (0 or more), order %d (1..10)",
                        levels, order);
+    /* a domain's shared curves would have to be split alike in every face */
+    if (m->dom && m->dom->nfaces > 1)
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "refinement of a mesh of %d faces is not supported yet: mesh one face "
+                       "(--face N) for a family",
+                       m->dom->nfaces);
     if ((double)m->q->nquads * pow(4.0, levels) > o->max_quads)
         return SQ_FAIL(err, SQ_ERR_USAGE,
                        "%d quads split 2 x 2 %d time%s give %.0f quads, more than --max-quads %.3g",

@@ -39,6 +39,8 @@ typedef struct {
     const char *progress;  /* --progress auto|json|none */
     sq_cli_progress bar;   /* its state (opt.progress_data and opt.log_data point here) */
     int bl[SQ_CLI_MAX_LIST];        /* mesh --bl (opt.bl_edges points here) */
+    int faces[SQ_CLI_MAX_LIST];     /* mesh --face N,M,... */
+    int nfaces;                     /* 0: every planar face */
     double sizes[SQ_CLI_MAX_LIST];  /* converge --sizes (opt.study_sizes points here) */
     int levels;                     /* mesh --levels L (0: one mesh) */
     int orders[SQ_CLI_MAX_LIST];    /* mesh --orders Q1,Q2,... */

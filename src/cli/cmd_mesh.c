@@ -1,5 +1,5 @@
-/* semquad mesh FILE: the block-structured high-order quad mesh of a face
- * (sq_face_mesh), written where -o says, else beside the current
+/* semquad mesh FILE: the block-structured high-order quad mesh of a face,
+ * or of several as one conforming mesh (sq_model_mesh), written where -o says, else beside the current
  * directory's other files as <input stem>.msh. */
 #include "cli.h"
 
@@ -15,6 +15,11 @@ static sq_status parse_bl(const char *opt, const char *val, sq_cli_args *a, sq_e
 static sq_status parse_orders(const char *opt, const char *val, sq_cli_args *a, sq_error *err)
 {
     return sq_cli_int_list(opt, val, 1, 10, a->orders, SQ_CLI_MAX_LIST, &a->norders, err);
+}
+
+static sq_status parse_faces(const char *opt, const char *val, sq_cli_args *a, sq_error *err)
+{
+    return sq_cli_int_list(opt, val, 0, 1000000, a->faces, SQ_CLI_MAX_LIST, &a->nfaces, err);
 }
 
 /* The mesh file: -o, else <input stem>.<format> in the current directory
@@ -64,7 +69,7 @@ static sq_status run_mesh(sq_cli_args *a, sq_error *err)
     sq_model *m = NULL;
     SQ_TRY(sq_cli_open(a, &m, err));
     sq_mesh *mesh = NULL;
-    sq_status st = sq_face_mesh(m, a->face, &a->opt, &mesh, err);
+    sq_status st = sq_model_mesh(m, a->faces, a->nfaces, &a->opt, &mesh, err);
     if (st == SQ_OK) st = write_outputs(mesh, a, named, family, err);
     if (st == SQ_OK && family) st = sq_cli_family_write(mesh, a, err);
     char *text = NULL;
@@ -134,7 +139,11 @@ static const sq_cli_opt mesh_opts[] = {
     SQ_CLI_OPT_SVG("a picture of the mesh, coloured by quality"),
     SQ_CLI_OPT_REPORT,
     SQ_CLI_OPT_PROGRESS,
-    SQ_CLI_OPTS_READING,
+    {.name = "face", .kind = SQ_CLI_CUSTOM, .value = "N[,M...]", .def = "every planar face",
+     .help = "the faces to mesh as one conforming mesh, faces sharing an edge sharing its nodes "
+             "(semquad info lists them)",
+     .parse = parse_faces},
+    SQ_CLI_OPT_HEAL_TOLERANCE, SQ_CLI_OPT_NO_HEAL, SQ_CLI_OPT_QUIET,
     {0}};
 
 const sq_cli_command sq_cli_mesh = {

@@ -236,6 +236,17 @@ done:
     return st;
 }
 
+/* The edges whose points opt->edge_points prescribes take exactly those. */
+static sq_status bdisc_prescribed(const sq_edge_points *ep, bdisc *b, sq_error *err)
+{
+    for (int e = 0; e < b->nedges; e++) {
+        if (ep[e].n <= 0) continue;
+        b->n[e] = 0;
+        for (int k = 0; k < ep[e].n; k++) SQ_TRY(bdisc_insert(b, e, ep[e].s[k], err));
+    }
+    return SQ_OK;
+}
+
 /* The polygon of a discretization: points, their (edge, s), and loop ranges. */
 typedef struct {
     int np;
@@ -637,6 +648,7 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
     cad_cdt_output o = {0};
     sq_status st = size_ctx_init(&sc, opt, size, err);
     if (st == SQ_OK) st = bdisc_initial(face, &sc, opt->max_turn_deg * M_PI / 180.0, &b, err);
+    if (st == SQ_OK && opt->edge_points) st = bdisc_prescribed(opt->edge_points, &b, err);
     int round = 0, done = 0;
     for (; st == SQ_OK && !done && round < MAX_ROUNDS; round++) {
         int nsplit = 0, nbad = 0;

@@ -21,6 +21,12 @@
 #include "cad.h"
 #include "tri_mesh.h"
 
+/* Arc lengths of points on one CAD edge. */
+typedef struct {
+    int n;
+    const double *s;
+} sq_edge_points;
+
 /* The highest order of the curved triangles (their nodal sets stop there). */
 #define SQ_TRI_MAX_ORDER 12
 
@@ -40,6 +46,12 @@ typedef struct {
                              it the face is refused (SQ_ERR_GEOMETRY) */
     int keep_segments;    /* 1: never split a boundary segment in the refinement
                              (cad_cdt_input's: for order 1 with no angle bound) */
+    /* NULL, or per CAD edge of the face: where .n > 0, the edge's boundary
+     * points to start from are exactly s[0..n-1] (arc lengths along its
+     * direction of travel, s[0] = 0, increasing, below its length) instead
+     * of the equidistributed ones: faces of a domain sharing an edge start
+     * from one discretization of it (docs/domains.md) */
+    const sq_edge_points *edge_points;
 } sq_tri_options;
 
 /* The coarse triangulation carries a field of order up to 12 on every

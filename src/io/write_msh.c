@@ -25,17 +25,6 @@ sq_status sq_quad_mesh_check(const sq_quad_mesh *m, sq_error *err)
     return SQ_OK;
 }
 
-/* Lattice (i, j) of the s-th node along local side k, from corner k to
- * corner k+1 (counter-clockwise, the domain on the left). */
-static int side_node(int Q, int k, int s)
-{
-    switch (k) {
-    case 0: return sq_quad_node(Q, s, 0);
-    case 1: return sq_quad_node(Q, Q, s);
-    case 2: return sq_quad_node(Q, Q - s, Q);
-    default: return sq_quad_node(Q, 0, Q - s);
-    }
-}
 
 sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, const sq_progress *progress,
                        sq_error *err)
@@ -71,7 +60,7 @@ sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, const sq_progre
         const int *c = &m->conn[(size_t)m->bnd_quad[s] * npe];
         count[t]++;
         for (int k = 0; k <= Q; k++) {
-            const double *x = &m->xy[2 * (size_t)c[side_node(Q, m->bnd_side[s], k)]];
+            const double *x = &m->xy[2 * (size_t)c[sq_quad_side_node(Q, m->bnd_side[s], k)]];
             double *b = &bb[4 * t];
             b[0] = fmin(b[0], x[0]), b[1] = fmin(b[1], x[1]);
             b[2] = fmax(b[2], x[0]), b[3] = fmax(b[3], x[1]);
@@ -82,19 +71,27 @@ sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, const sq_progre
     FILE *fp = f.fp;
     fputs("$MeshFormat\n4.1 0 8\n$EndMeshFormat\n", fp);
     /* physical names: dim tag "name" */
-    fprintf(fp, "$PhysicalNames\n%d\n", nt + 1);
+    /* one surface, "domain"; or one per face of a domain, "face_N"
+     * (docs/domains.md) */
+    int ns = m->nregions > 0 ? m->nregions : 1;
+    fprintf(fp, "$PhysicalNames\n%d\n", nt + ns);
     for (int t = 0; t < nt; t++) fprintf(fp, "1 %d \"boundary_%d\"\n", t + 1, t);
-    fprintf(fp, "2 %d \"domain\"\n$EndPhysicalNames\n", nt + 1);
+    if (m->nregions == 0) fprintf(fp, "2 %d \"domain\"\n", nt + 1);
+    for (int r = 0; r < m->nregions; r++) fprintf(fp, "2 %d \"face_%d\"\n", nt + 1 + r, m->region_face[r]);
+    fputs("$EndPhysicalNames\n", fp);
     /* entities: no points; curve t+1 with physical t+1 and no bounding
-     * points; surface 1 with physical nt+1 bounded by all curves */
-    fprintf(fp, "$Entities\n0 %d 1 0\n", nt);
+     * points; surface r+1 with physical nt+1+r bounded by all curves */
+    fprintf(fp, "$Entities\n0 %d %d 0\n", nt, ns);
     for (int t = 0; t < nt; t++)
         fprintf(fp, "%d %.17g %.17g 0 %.17g %.17g 0 1 %d 0\n", t + 1, bb[4 * t], bb[4 * t + 1],
                 bb[4 * t + 2], bb[4 * t + 3], t + 1);
-    fprintf(fp, "1 %.17g %.17g 0 %.17g %.17g 0 1 %d %d", bb[4 * nt], bb[4 * nt + 1],
-            bb[4 * nt + 2], bb[4 * nt + 3], nt + 1, nt);
-    for (int t = 0; t < nt; t++) fprintf(fp, " %d", t + 1);
-    fputs("\n$EndEntities\n", fp);
+    for (int r = 0; r < ns; r++) {
+        fprintf(fp, "%d %.17g %.17g 0 %.17g %.17g 0 1 %d %d", r + 1, bb[4 * nt], bb[4 * nt + 1],
+                bb[4 * nt + 2], bb[4 * nt + 3], nt + 1 + r, nt);
+        for (int t = 0; t < nt; t++) fprintf(fp, " %d", t + 1);
+        fputc('\n', fp);
+    }
+    fputs("$EndEntities\n", fp);
     /* nodes: one block on the surface, tags 1..nnodes, not parametric */
     fprintf(fp, "$Nodes\n1 %d %d %d\n2 1 0 %d\n", m->nnodes, m->nnodes ? 1 : 0, m->nnodes,
             m->nnodes);
@@ -105,17 +102,22 @@ sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, const sq_progre
     }
     fputs("$EndNodes\n", fp);
     /* elements: the quads (tags 1..nquads), then a block of lines per curve */
-    int nblocks = 1, nel = m->nquads + m->nbnd;
+    int nblocks = ns, nel = m->nquads + m->nbnd;
     for (int t = 0; t < nt; t++) nblocks += count[t] > 0;
     fprintf(fp, "$Elements\n%d %d %d %d\n", nblocks, nel, nel ? 1 : 0, nel);
-    fprintf(fp, "2 1 %d %d\n", sq_gmsh_quad_type(Q), m->nquads);
-    for (int q = 0; q < m->nquads; q++) {
-        const int *c = &m->conn[(size_t)q * npe];
-        fprintf(fp, "%d", q + 1);
-        for (int k = 0; k < npe; k++)
-            fprintf(fp, " %d", c[sq_quad_node(Q, ij[2 * k], ij[2 * k + 1])] + 1);
-        fputc('\n', fp);
-        sq_progress_every(progress, "write", ++done, total);
+    for (int r = 0; r < ns; r++) {
+        int nr = 0;
+        for (int q = 0; q < m->nquads; q++) nr += !m->region || m->region[q] == r;
+        fprintf(fp, "2 %d %d %d\n", r + 1, sq_gmsh_quad_type(Q), nr);
+        for (int q = 0; q < m->nquads; q++) {
+            if (m->region && m->region[q] != r) continue;
+            const int *c = &m->conn[(size_t)q * npe];
+            fprintf(fp, "%d", q + 1);
+            for (int k = 0; k < npe; k++)
+                fprintf(fp, " %d", c[sq_quad_node(Q, ij[2 * k], ij[2 * k + 1])] + 1);
+            fputc('\n', fp);
+            sq_progress_every(progress, "write", ++done, total);
+        }
     }
     int tag = m->nquads;
     for (int t = 0; t < nt; t++) {
@@ -125,7 +127,7 @@ sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, const sq_progre
             if (m->bnd_tag[s] != t) continue;
             const int *c = &m->conn[(size_t)m->bnd_quad[s] * npe];
             fprintf(fp, "%d", ++tag);
-            for (int k = 0; k <= Q; k++) fprintf(fp, " %d", c[side_node(Q, m->bnd_side[s], lo[k])] + 1);
+            for (int k = 0; k <= Q; k++) fprintf(fp, " %d", c[sq_quad_side_node(Q, m->bnd_side[s], lo[k])] + 1);
             fputc('\n', fp);
             sq_progress_every(progress, "write", ++done, total);
         }

@@ -20,16 +20,6 @@ static int cmp_side(const void *a, const void *b)
     return (x->side > y->side) - (x->side < y->side);
 }
 
-static int side_node(int Q, int k, int s)
-{
-    switch (k) {
-    case 0: return sq_quad_node(Q, s, 0);
-    case 1: return sq_quad_node(Q, Q, s);
-    case 2: return sq_quad_node(Q, Q - s, Q);
-    default: return sq_quad_node(Q, 0, Q - s);
-    }
-}
-
 /* "a-b" ranges of a sorted id list, comma separated. */
 static void write_ranges(FILE *fp, const int *ids, int n)
 {
@@ -70,7 +60,7 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_prog
     /* vertices: corner nodes, numbered in node order */
     for (int v = 0; v < m->nnodes; v++) vid[v] = -1;
     for (int q = 0; q < nq; q++)
-        for (int k = 0; k < 4; k++) vid[m->conn[(size_t)q * npe + side_node(Q, k, 0)]] = 0;
+        for (int k = 0; k < 4; k++) vid[m->conn[(size_t)q * npe + sq_quad_side_node(Q, k, 0)]] = 0;
     int nv = 0;
     for (int v = 0; v < m->nnodes; v++)
         if (vid[v] == 0) vid[v] = nv++;
@@ -80,11 +70,11 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_prog
     for (int q = 0; q < nq; q++) {
         const int *c = &m->conn[(size_t)q * npe];
         for (int k = 0; k < 4; k++) {
-            int a = c[side_node(Q, k, 0)], b = c[side_node(Q, k, Q)];
+            int a = c[sq_quad_side_node(Q, k, 0)], b = c[sq_quad_side_node(Q, k, Q)];
             side_rec *r = &rec[4 * q + k];
             unsigned long long lo = (unsigned)(a < b ? a : b), hi = (unsigned)(a < b ? b : a);
             r->key = lo << 32 | hi;
-            r->next = Q >= 2 ? c[side_node(Q, k, a < b ? 1 : Q - 1)] : 0;
+            r->next = Q >= 2 ? c[sq_quad_side_node(Q, k, a < b ? 1 : Q - 1)] : 0;
             r->quad = q;
             r->side = k;
         }
@@ -115,8 +105,8 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_prog
     for (int e = 0; e < ne; e++) {
         int q = owner[e] / 4, k = owner[e] % 4;
         const int *c = &m->conn[(size_t)q * npe];
-        fprintf(fp, "      <E ID=\"%d\">%d %d</E>\n", e, vid[c[side_node(Q, k, 0)]],
-                vid[c[side_node(Q, k, Q)]]);
+        fprintf(fp, "      <E ID=\"%d\">%d %d</E>\n", e, vid[c[sq_quad_side_node(Q, k, 0)]],
+                vid[c[sq_quad_side_node(Q, k, Q)]]);
         sq_progress_every(progress, "write", ++done, total);
     }
     fputs("    </EDGE>\n    <ELEMENT>\n", fp);
@@ -136,7 +126,7 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_prog
             fprintf(fp, "      <E ID=\"%d\" EDGEID=\"%d\" NUMPOINTS=\"%d\" TYPE=\"%s\">", e, e,
                     Q + 1, ptype);
             for (int s = 0; s <= Q; s++) {
-                const double *x = &m->xy[2 * (size_t)c[side_node(Q, k, s)]];
+                const double *x = &m->xy[2 * (size_t)c[sq_quad_side_node(Q, k, s)]];
                 fprintf(fp, "%s%.17g %.17g 0", s ? " " : "", x[0], x[1]);
             }
             fputs("</E>\n", fp);
@@ -154,10 +144,17 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_prog
         }
         fputs("    </CURVED>\n", fp);
     }
-    fputs("    <COMPOSITE>\n      <C ID=\"0\"> Q[", fp);
-    for (int q = 0; q < nq; q++) list[q] = q;
-    write_ranges(fp, list, nq);
-    fputs("] </C>\n", fp);
+    /* the quads: composite 0; of a domain's faces, one composite per face
+     * after the boundary's, nt+1+r (docs/domains.md) */
+    fputs("    <COMPOSITE>\n", fp);
+    for (int r = 0; r < (m->nregions > 0 ? m->nregions : 1); r++) {
+        int n = 0;
+        for (int q = 0; q < nq; q++)
+            if (!m->region || m->region[q] == r) list[n++] = q;
+        fprintf(fp, "      <C ID=\"%d\"> Q[", m->region ? m->ntags + 1 + r : 0);
+        write_ranges(fp, list, n);
+        fputs("] </C>\n", fp);
+    }
     for (int t = 0; t < m->ntags; t++) {
         int n = 0;
         for (int s = 0; s < m->nbnd; s++)
@@ -168,7 +165,14 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_prog
         write_ranges(fp, list, n);
         fputs("] </C>\n", fp);
     }
-    fputs("    </COMPOSITE>\n    <DOMAIN> C[0] </DOMAIN>\n  </GEOMETRY>\n</NEKTAR>\n", fp);
+    if (m->nregions > 1)
+        fprintf(fp, "    </COMPOSITE>\n    <DOMAIN> C[%d-%d] </DOMAIN>\n", m->ntags + 1,
+                m->ntags + m->nregions);
+    else if (m->nregions == 1)
+        fprintf(fp, "    </COMPOSITE>\n    <DOMAIN> C[%d] </DOMAIN>\n", m->ntags + 1);
+    else
+        fputs("    </COMPOSITE>\n    <DOMAIN> C[0] </DOMAIN>\n", fp);
+    fputs("  </GEOMETRY>\n</NEKTAR>\n", fp);
     st = sq_outfile_commit(&f, err);
 done:
     sq_outfile_abort(&f);

@@ -70,6 +70,10 @@ sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m0, const sq_p
     cell_array(fp, "scaled_jacobian", sj, nq);
     fputs("<DataArray type=\"Int32\" Name=\"patch\" format=\"ascii\">\n", fp);
     for (int q = 0; q < nq; q++) fprintf(fp, "%d\n", m->patch[q]);
+    if (m->region) { /* a domain's faces (docs/domains.md) */
+        fputs("</DataArray>\n<DataArray type=\"Int32\" Name=\"face\" format=\"ascii\">\n", fp);
+        for (int q = 0; q < nq; q++) fprintf(fp, "%d\n", m->region_face[m->region[q]]);
+    }
     fputs("</DataArray>\n</CellData>\n</Piece>\n</UnstructuredGrid>\n</VTKFile>\n", fp);
     st = sq_outfile_commit(&f, err);
 done:

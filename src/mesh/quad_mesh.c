@@ -51,8 +51,21 @@ void sq_quad_mesh_free(sq_quad_mesh **mp)
     free(m->bnd_quad);
     free(m->bnd_side);
     free(m->bnd_tag);
+    free(m->region);
+    free(m->region_face);
     free(m);
     *mp = NULL;
+}
+
+sq_status sq_quad_mesh_set_regions(sq_quad_mesh *m, int nregions, sq_error *err)
+{
+    free(m->region);
+    free(m->region_face);
+    m->nregions = nregions;
+    m->region = calloc((size_t)m->nquads + 1, sizeof *m->region);
+    m->region_face = calloc((size_t)nregions + 1, sizeof *m->region_face);
+    if (!m->region || !m->region_face) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    return SQ_OK;
 }
 
 sq_status sq_quad_basis_init(sq_quad_basis *b, int order, sq_node_kind nodes, sq_error *err)
@@ -137,6 +150,15 @@ sq_status sq_quad_mesh_resample(const sq_quad_mesh *m, sq_node_kind nodes, sq_qu
     memcpy(r->bnd_side, m->bnd_side, (size_t)m->nbnd * sizeof *r->bnd_side);
     memcpy(r->bnd_tag, m->bnd_tag, (size_t)m->nbnd * sizeof *r->bnd_tag);
     r->ntags = m->ntags;
+    if (m->nregions > 0) {
+        sq_status st = sq_quad_mesh_set_regions(r, m->nregions, err);
+        if (st != SQ_OK) {
+            sq_quad_mesh_free(&r);
+            return st;
+        }
+        memcpy(r->region, m->region, (size_t)m->nquads * sizeof *r->region);
+        memcpy(r->region_face, m->region_face, (size_t)m->nregions * sizeof *r->region_face);
+    }
     /* Unused nodes keep their position. */
     memcpy(r->xy, m->xy, 2 * (size_t)m->nnodes * sizeof *r->xy);
     if (nodes == m->nodes) {

@@ -31,7 +31,16 @@ typedef struct {
     int *bnd_side;       /* nbnd: its local side 0..3 */
     int *bnd_tag;        /* nbnd: CAD edge index (the boundary curve, physical group) */
     int ntags;           /* boundary curves: tags are 0..ntags-1 */
+    /* faces of a domain (docs/domains.md): nregions > 0 faces, region[q]
+     * the face (0..nregions-1) of quad q, region_face[r] that face's number
+     * in the CAD file; nregions = 0, both NULL: one face */
+    int nregions;
+    int *region;
+    int *region_face;
 } sq_quad_mesh;
+
+/* Give m nregions regions (region[] and region_face[] allocated, zeroed). */
+sq_status sq_quad_mesh_set_regions(sq_quad_mesh *m, int nregions, sq_error *err);
 
 sq_status sq_quad_mesh_create(int order, sq_node_kind nodes, int nnodes, int nquads, int nbnd,
                               sq_quad_mesh **out, sq_error *err);
@@ -39,6 +48,18 @@ void sq_quad_mesh_free(sq_quad_mesh **m); /* NULL-safe, NULLs *m */
 
 /* Lattice index of node (i, j) of a quad of order Q. */
 static inline int sq_quad_node(int Q, int i, int j) { return j * (Q + 1) + i; }
+
+/* Lattice index of the s-th node along local side k of a quad of order Q,
+ * from corner k to corner k+1 (counter-clockwise, the quad on the left). */
+static inline int sq_quad_side_node(int Q, int k, int s)
+{
+    switch (k) {
+    case 0: return sq_quad_node(Q, s, 0);
+    case 1: return sq_quad_node(Q, Q, s);
+    case 2: return sq_quad_node(Q, Q - s, Q);
+    default: return sq_quad_node(Q, 0, Q - s);
+    }
+}
 
 /* Quality (docs/conventions.md, Jezdimirović 2021 Table 1): per quad,
  * eta = 1 - max_k |alpha_k - π/2| / (π/2) over the four corner angles, and

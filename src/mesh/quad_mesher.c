@@ -31,6 +31,23 @@ sq_status sq_mesher_check_size(double area, double size, double max_quads, sq_er
     return SQ_OK;
 }
 
+/* keep[i] = 1 also at the vertices of sides on opt->held_edges (*keep
+ * allocated if NULL). */
+static sq_status held_keep(const sq_mesher_options *opt, const qm_vmesh *v, int **keep,
+                           sq_error *err)
+{
+    if (!opt->held_edges) return SQ_OK;
+    if (!*keep && !(*keep = calloc((size_t)v->nv + 1, sizeof(int))))
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int q = 0; q < v->nq; q++)
+        for (int k = 0; k < 4; k++) {
+            int t = v->side_tag[4 * q + k];
+            if (t >= 0 && opt->held_edges[t])
+                (*keep)[v->quad[4 * q + k]] = (*keep)[v->quad[4 * q + (k + 1) % 4]] = 1;
+        }
+    return SQ_OK;
+}
+
 static int is_quad(const sq_layout_patch *p) { return p->ncorners == 4 && p->ncycles == 1; }
 
 /* Design 3 from the glued vertex mesh on: untangling, relaxation, order Q.
@@ -42,6 +59,7 @@ static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh
     /* the boundary layers keep their grading: no smoothing there */
     int *keep = NULL;
     sq_status st = qm_bl_keep(face, opt, v, &keep, err);
+    if (st == SQ_OK) st = held_keep(opt, v, &keep, err);
     /* untangling, where transfinite interpolation folded a quad */
     int folded = 0;
     for (int q = 0; q < v->nq && st == SQ_OK; q++) folded += !qm_quad_valid(v, q);

@@ -29,6 +29,7 @@
 #include "layout.h"
 #include "quad_mesh.h"
 #include "sq_progress.h"
+#include "triangulate.h"
 
 typedef struct {
     int order;          /* Q, 1..10 (default 4) */
@@ -49,6 +50,13 @@ typedef struct {
     double max_quads;
     /* "mesh" (patches filled of all) and the relaxation's "relax" */
     sq_progress progress;
+    /* faces of a domain (docs/domains.md), NULL for one face: per CAD edge
+     * of the face, the split road's triangulation starts from these points
+     * (sq_tri_options.edge_points), and where held_edges[e] is 1 the
+     * vertices on edge e stay where they are placed (smoothing and
+     * relaxation move them on no face, so the faces sharing e agree) */
+    const sq_edge_points *edge_points;
+    const int *held_edges;
 } sq_mesher_options;
 
 /* 2e7 quads of order 4 take about 10 GB (25 nodes of 16 bytes each, the

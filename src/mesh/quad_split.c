@@ -17,13 +17,15 @@
  * sliver), while a triangle with that corner split in three quads is
  * valid (scaled Jacobian sin a > 0). */
 static sq_status triangulate(const cad_face *face, const sq_face_info *info, double size,
-                             double max_quads, sq_triangulation *tri, sq_error *err)
+                             double max_quads, const sq_edge_points *edge_points,
+                             sq_triangulation *tri, sq_error *err)
 {
     static const double min_angle[] = {20.0, 5.0, 0.0};
     sq_tri_options to;
     sq_tri_options_default(&to);
     to.order = 1;
     to.size = SQ_SPLIT_TRI_SIZE * size;
+    to.edge_points = edge_points;
     double budget = max_quads > 0.0 ? max_quads / 6.0 : 2e7;
     double expected = 4.0 * fabs(info->area) / (to.size * to.size) + SQ_TRI_MAX_VERTICES;
     sq_status st = SQ_OK;
@@ -133,28 +135,46 @@ static sq_status split(const cad_face *face, const sq_triangulation *tri, split_
     return st;
 }
 
-sq_status sq_mesh_split(const cad_face *face, const sq_face_info *info,
-                        const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
+sq_status sq_split_triangulate(const cad_face *face, const sq_face_info *info,
+                               const sq_mesher_options *opt, sq_triangulation *tri, sq_error *err)
 {
-    *out = NULL;
+    memset(tri, 0, sizeof *tri);
     double size = opt->size > 0.0 ? opt->size : sq_mesher_default_size(info->area);
     if (opt->max_quads > 0.0) SQ_TRY(sq_mesher_check_size(info->area, size, opt->max_quads, err));
-    sq_triangulation tri;
-    SQ_TRY(triangulate(face, info, size, opt->max_quads, &tri, err));
-    sq_status st = SQ_OK;
-    double nquads = 3.0 * tri.mesh->ntris;
-    if (opt->max_quads > 0.0 && nquads > opt->max_quads)
-        st = SQ_FAIL(err, SQ_ERR_USAGE,
-                     "the split road at size %g gives %.3g quads, more than --max-quads %.3g; try a "
-                     "size of %.3g or more",
-                     size, nquads, opt->max_quads, size * sqrt(nquads / opt->max_quads));
+    SQ_TRY(triangulate(face, info, size, opt->max_quads, opt->edge_points, tri, err));
+    double nquads = 3.0 * tri->mesh->ntris;
+    if (opt->max_quads > 0.0 && nquads > opt->max_quads) {
+        sq_triangulation_free(tri);
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "the split road at size %g gives %.3g quads, more than --max-quads %.3g; "
+                       "try a size of %.3g or more",
+                       size, nquads, opt->max_quads, size * sqrt(nquads / opt->max_quads));
+    }
+    return SQ_OK;
+}
+
+sq_status sq_mesh_split_triangulation(const cad_face *face, const sq_face_info *info,
+                                      const sq_triangulation *tri, const sq_mesher_options *opt,
+                                      sq_quad_mesh **out, sq_error *err)
+{
+    *out = NULL;
     split_mesh s = {0};
-    if (st == SQ_OK) st = split(face, &tri, &s, err);
-    sq_triangulation_free(&tri);
+    sq_status st = split(face, tri, &s, err);
     if (st == SQ_OK) {
         sq_linear_quads lq = {s.nv, s.nq, s.xy, s.quad, s.block, s.side_tag};
         st = sq_mesh_linear_quads(face, info, &lq, opt, out, err);
     }
     split_mesh_free(&s);
+    return st;
+}
+
+sq_status sq_mesh_split(const cad_face *face, const sq_face_info *info,
+                        const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
+{
+    *out = NULL;
+    sq_triangulation tri;
+    SQ_TRY(sq_split_triangulate(face, info, opt, &tri, err));
+    sq_status st = sq_mesh_split_triangulation(face, info, &tri, opt, out, err);
+    sq_triangulation_free(&tri);
     return st;
 }

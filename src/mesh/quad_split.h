@@ -37,4 +37,13 @@
 sq_status sq_mesh_split(const cad_face *face, const sq_face_info *info,
                         const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err);
 
+/* sq_mesh_split in two halves, for faces of a domain that exchange their
+ * shared edges' points between them (docs/domains.md): design 1 (with
+ * opt->edge_points), then designs 2 and 3 on that triangulation. */
+sq_status sq_split_triangulate(const cad_face *face, const sq_face_info *info,
+                               const sq_mesher_options *opt, sq_triangulation *tri, sq_error *err);
+sq_status sq_mesh_split_triangulation(const cad_face *face, const sq_face_info *info,
+                                      const sq_triangulation *tri, const sq_mesher_options *opt,
+                                      sq_quad_mesh **out, sq_error *err);
+
 #endif

@@ -1,0 +1,247 @@
+/* semquad public API: the mesh of several faces of a model as one
+ * conforming mesh (sq_model_mesh; docs/domains.md).  One face is
+ * sq_face_mesh; several go through the domain stage (src/domain). */
+#include "api_private.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+void sq_api_domain_free(sq_api_domain **d)
+{
+    if (!d || !*d) return;
+    free((*d)->face);
+    free((*d)->road);
+    free((*d)->area);
+    free((*d)->curves);
+    free((*d)->quad_face);
+    free(*d);
+    *d = NULL;
+}
+
+/* The faces a model mesh takes without a list: every planar face (a
+ * broken one among them is refused with its reason, as alone); none
+ * planar: the default face, refused as sq_face_mesh refuses it. */
+static sq_status planar_faces(const sq_model *m, int **faces, int *n, sq_error *err)
+{
+    int nf = cad_model_num_faces(m->cad);
+    *faces = malloc(sizeof(int) * ((size_t)nf + 1));
+    if (!*faces) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    *n = 0;
+    for (int f = 0; f < nf; f++)
+        if (cad_model_face_planar(m->cad, f)) (*faces)[(*n)++] = f;
+    if (*n == 0) (*faces)[(*n)++] = -1;
+    return SQ_OK;
+}
+
+/* The faces' own data: open, their info (area, corners), cusps refused. */
+typedef struct {
+    int n;
+    sq_api_face *face;
+    const cad_face **cad;
+    sq_face_info *info;
+    sq_quad_mesh **q;
+} faces_open;
+
+static void faces_close(faces_open *f)
+{
+    for (int k = 0; k < f->n; k++) {
+        sq_api_face_close(&f->face[k]);
+        sq_face_info_free(&f->info[k]);
+        sq_quad_mesh_free(&f->q[k]);
+    }
+    free(f->face), free(f->cad), free(f->info), free(f->q);
+}
+
+static sq_status faces_load(const sq_model *m, const int *faces, int n, const sq_options *o,
+                            faces_open *f, sq_error *err)
+{
+    f->n = 0;
+    f->face = calloc((size_t)n, sizeof *f->face);
+    f->cad = calloc((size_t)n, sizeof *f->cad);
+    f->info = calloc((size_t)n, sizeof *f->info);
+    f->q = calloc((size_t)n, sizeof *f->q);
+    if (!f->face || !f->cad || !f->info || !f->q) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < n; k++) {
+        for (int j = 0; j < k; j++)
+            if (faces[j] == faces[k]) return SQ_FAIL(err, SQ_ERR_USAGE, "--face %d named twice", faces[k]);
+        SQ_TRY(sq_api_face_open(m, faces[k], o, &f->face[k], err));
+        f->n = k + 1;
+        f->cad[k] = f->face[k].cad;
+        SQ_TRY(sq_face_info_compute(f->cad[k], &f->info[k], err));
+        sq_status st = sq_face_check_cusps(&f->info[k], err);
+        if (st != SQ_OK) {
+            sq_api_cusp_hint(m->cad, &f->info[k], err);
+            return st;
+        }
+    }
+    return SQ_OK;
+}
+
+/* The faces with (shares 1) or without (0) a shared curve, each by its
+ * own roads (as o says) at the domain's size, the vertices on its shared
+ * curves held; their meshes taken into f->q. */
+static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
+                           const sq_options *o, int shares, const char **road, sq_error *err)
+{
+    for (int k = 0; k < f->n; k++) {
+        if (sq_domain_face_shares(d, k) != shares) continue;
+        int ne = cad_face_num_edges(f->cad[k]);
+        int *held = calloc((size_t)ne + 1, sizeof(int));
+        if (!held) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        for (int e = 0; e < ne; e++) held[e] = d->curves[d->curve_of[k][e]].face[1] >= 0;
+        sq_mesh *h = NULL;
+        sq_status st = sq_api_face_mesh(m, f->face[k].index, o, shares ? held : NULL, &h, err);
+        free(held);
+        if (st != SQ_OK) return st;
+        road[k] = !strcmp(h->road.name, "split") ? "split" : "layout";
+        f->q[k] = h->q;
+        h->q = NULL;
+        sq_mesh_free(&h);
+    }
+    return SQ_OK;
+}
+
+/* The faces sharing curves by the layout road, each alone with its shared
+ * curves' vertices held, merged: conforming only where their layouts put
+ * the same vertices on each shared curve (faces whose chords agree: three
+ * rectangles in a row); *merged NULL and a note where they do not. */
+static sq_status try_layouts(const sq_model *m, const sq_domain *d, faces_open *f,
+                             const sq_options *o, const int *faces, const char **road,
+                             sq_quad_mesh **merged, sq_error *err)
+{
+    sq_options ol = *o;
+    ol.road = "layout";
+    sq_status st = mesh_each(m, d, f, &ol, 1, road, err);
+    if (st == SQ_OK) st = sq_domain_merge(d, f->q, faces, o->size, merged, err);
+    if (st == SQ_OK) return SQ_OK;
+    for (int k = 0; k < f->n; k++)
+        if (sq_domain_face_shares(d, k)) sq_quad_mesh_free(&f->q[k]);
+    return st;
+}
+
+/* The domain's record in h->dom, and its per-quad faces. */
+static sq_status keep_domain(sq_mesh *h, const sq_domain *d, const faces_open *f,
+                             const char **road, int rounds, sq_error *err)
+{
+    sq_api_domain *a = calloc(1, sizeof *a);
+    if (!(h->dom = a)) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    a->nfaces = f->n;
+    a->face = malloc(sizeof(int) * (size_t)f->n);
+    a->road = malloc(sizeof(char *) * (size_t)f->n);
+    a->area = malloc(sizeof(double) * (size_t)f->n);
+    a->curves = malloc(sizeof *a->curves * ((size_t)d->ncurves + 1));
+    a->quad_face = malloc(sizeof(int) * ((size_t)h->q->nquads + 1));
+    if (!a->face || !a->road || !a->area || !a->curves || !a->quad_face)
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < f->n; k++)
+        a->face[k] = f->face[k].index, a->road[k] = road[k], a->area[k] = f->info[k].area;
+    memcpy(a->curves, d->curves, sizeof *a->curves * (size_t)d->ncurves);
+    a->ncurves = d->ncurves, a->ntags = d->ntags, a->rounds = rounds;
+    for (int q = 0; q < h->q->nquads; q++) a->quad_face[q] = a->face[h->q->region[q]];
+    return SQ_OK;
+}
+
+/* Several faces: the domain's curves, the meshes of its faces, merged. */
+static sq_status mesh_domain(const sq_model *m, const int *faces, int n, const sq_options *o,
+                             sq_mesh *h, sq_error *err)
+{
+    faces_open f = {0};
+    sq_domain d = {0};
+    sq_mesher_options mo;
+    sq_options os = *o;
+    const char **road = calloc((size_t)n, sizeof *road);
+    int rounds = 0;
+    sq_status st = road ? faces_load(m, faces, n, o, &f, err)
+                        : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    /* one size for all: the faces sharing a curve discretize it alike; by
+     * default the smallest face's own default, so none is coarser than alone */
+    if (st == SQ_OK && !(os.size > 0.0)) {
+        os.size = HUGE_VAL;
+        for (int k = 0; k < n; k++) os.size = fmin(os.size, sq_mesher_default_size(f.info[k].area));
+    }
+    if (st == SQ_OK) st = sq_api_mesher_options(&os, &mo, err);
+    h->progress = mo.progress;
+    if (st == SQ_OK) h->face = f.face[0], f.face[0].cad = NULL, f.cad[0] = h->face.cad;
+    double tol = fmax(cad_model_heal_tolerance(m->cad), 1e-6 * os.size);
+    if (st == SQ_OK) st = sq_domain_build(n, f.cad, f.info, tol, &d, err);
+    if (st == SQ_OK && d.ninterfaces > 0)
+        sq_api_log(o, SQ_LOG_NOTE, "%d faces share %d curves (docs/domains.md)", n, d.ninterfaces);
+    sq_api_road want = SQ_API_ROAD_AUTO;
+    if (st == SQ_OK) st = sq_api_parse_road(o->road, &want, err);
+    if (st == SQ_OK) st = mesh_each(m, &d, &f, &os, 0, road, err);
+    if (st == SQ_OK && want != SQ_API_ROAD_SPLIT) {
+        sq_error e2;
+        sq_error_clear(&e2);
+        sq_status s2 = d.ninterfaces ? try_layouts(m, &d, &f, &os, faces, road, &h->q, &e2)
+                                     : sq_domain_merge(&d, f.q, faces, os.size, &h->q, &e2);
+        if (s2 != SQ_OK && (want == SQ_API_ROAD_LAYOUT || !d.ninterfaces)) *err = e2, st = s2;
+        else if (s2 != SQ_OK)
+            sq_api_log(o, SQ_LOG_NOTE, "the layout road gives no conforming mesh of the faces (%s); "
+                                       "the faces sharing curves take the split road", e2.msg);
+    }
+    if (st == SQ_OK && !h->q) {
+        st = sq_domain_mesh_split(&d, &mo, f.q, &rounds, err);
+        for (int k = 0; k < n && st == SQ_OK; k++)
+            if (sq_domain_face_shares(&d, k)) road[k] = "split";
+        if (st == SQ_OK) st = sq_domain_merge(&d, f.q, faces, os.size, &h->q, err);
+    }
+    if (st == SQ_OK) st = keep_domain(h, &d, &f, road, rounds, err);
+    sq_domain_free(&d);
+    faces_close(&f);
+    free(road);
+    return st;
+}
+
+sq_status sq_model_mesh(const sq_model *m, const int *faces, int nfaces, const sq_options *o,
+                        sq_mesh **out, sq_error *err)
+{
+    *out = NULL;
+    sq_options def;
+    o = sq_api_options(o, &def);
+    SQ_TRY(sq_options_check(o, err));
+    int *all = NULL;
+    if (!faces || nfaces <= 0) {
+        sq_status st = planar_faces(m, &all, &nfaces, err);
+        if (st != SQ_OK) {
+            free(all);
+            return st;
+        }
+        faces = all;
+    }
+    if (nfaces == 1) {
+        int f = faces[0];
+        free(all);
+        return sq_face_mesh(m, f, o, out, err);
+    }
+    sq_mesh *h = calloc(1, sizeof *h);
+    sq_status st = h && (h->t_write = calloc(1, sizeof *h->t_write))
+                       ? SQ_OK
+                       : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) {
+        h->t0 = sq_now();
+        h->t.read = m->t_read;
+        h->road.name = "domain";
+        h->nbl = o->nbl;
+    }
+    if (st == SQ_OK) st = mesh_domain(m, faces, nfaces, o, h, err);
+    if (st == SQ_OK) h->t.mesh = sq_now() - h->t0;
+    if (st == SQ_OK) st = sq_api_mesh_quality(h, err);
+    if (st == SQ_OK && h->quality.inverted > 0)
+        st = SQ_FAIL(err, SQ_ERR_LAYOUT,
+                     "%d quads have a non-positive Jacobian (min scaled Jacobian %.3g); try a "
+                     "smaller --size",
+                     h->quality.inverted, h->quality.min_scaled_jacobian);
+    if (st == SQ_OK) st = sq_api_mesh_arrays(h, err);
+    free(all);
+    if (st != SQ_OK) {
+        if (h) sq_mesh_free(&h);
+        return st;
+    }
+    sq_api_log(o, SQ_LOG_INFO, "meshed %d faces as one mesh (%.3f s)", nfaces, h->t.mesh);
+    *out = h;
+    return SQ_OK;
+}
+
+int sq_mesh_num_faces(const sq_mesh *m) { return m->dom ? m->dom->nfaces : 1; }
+const int *sq_mesh_quad_faces(const sq_mesh *m) { return m->dom ? m->dom->quad_face : NULL; }

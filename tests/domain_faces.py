@@ -1,0 +1,53 @@
+#!/usr/bin/python3
+"""Test helper: multi-face 2D domains as STEP files, built with Gmsh's OCC
+kernel (python3-gmsh) and fragmented so that faces share their edges:
+
+  circle_square  a disc of radius 0.5 inside the square [-1, 1]^2 (the
+                 geometry of NekMesh's real_circle_square.step): two faces
+                 sharing the circle;
+  three_row      three rectangles [0,1]x[0,1], [1,2.5]x[0,1], [2.5,3]x[0,1]
+                 in a row, sharing two straight edges;
+  hole_filled    the square [0,2]^2 with an elliptic hole (centre (1,1),
+                 semi-axes 0.6, 0.35) filled by the ellipse as a second face.
+
+usage: domain_faces.py NAME OUT.step; prints the exact face areas, one a line."""
+import math
+import sys
+
+import gmsh
+
+
+def build(name):
+    occ = gmsh.model.occ
+    if name == "circle_square":
+        a = occ.addRectangle(-1, -1, 0, 2, 2)
+        b = occ.addDisk(0, 0, 0, 0.5, 0.5)
+        occ.fragment([(2, a)], [(2, b)])
+        return [4 - math.pi * 0.25, math.pi * 0.25]
+    if name == "three_row":
+        r = [occ.addRectangle(0, 0, 0, 1, 1), occ.addRectangle(1, 0, 0, 1.5, 1),
+             occ.addRectangle(2.5, 0, 0, 0.5, 1)]
+        occ.fragment([(2, r[0])], [(2, r[1]), (2, r[2])])
+        return [1.0, 1.5, 0.5]
+    if name == "hole_filled":
+        a = occ.addRectangle(0, 0, 0, 2, 2)
+        b = occ.addDisk(1, 1, 0, 0.6, 0.35)
+        occ.fragment([(2, a)], [(2, b)])
+        return [4 - math.pi * 0.6 * 0.35, math.pi * 0.6 * 0.35]
+    raise SystemExit("unknown domain " + name)
+
+
+def main():
+    gmsh.initialize(["-v", "0"])
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.model.add(sys.argv[1])
+    areas = build(sys.argv[1])
+    gmsh.model.occ.synchronize()
+    gmsh.write(sys.argv[2])
+    gmsh.finalize()
+    for a in areas:
+        print("area %.17g" % a)
+
+
+if __name__ == "__main__":
+    main()
