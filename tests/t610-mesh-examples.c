@@ -2,7 +2,8 @@
  * the layout's singular points, every Jacobian positive at Q = 4,
  * conforming (each interior element side shared by exactly two quads with
  * the same nodes, each boundary side on the CAD boundary), and the curved
- * mesh's area equal to the face's to 1e-8 at Q = 8. */
+ * mesh's area equal to the face's to 1e-8 at Q = 8, and every node stored
+ * once (issue 22). */
 #include "layout_pipeline.h"
 #include "quad_mesher.h"
 #include "test_util.h"
@@ -58,6 +59,37 @@ static int conformity_defects(const sq_quad_mesh *m)
     return defects;
 }
 
+/* Nodes stored once (issue 22): the distinct nodes the quads reference,
+ * and, through Euler's count, V + (Q-1) E + (Q-1)^2 F for F quads, E =
+ * (4F + nbnd)/2 sides (interior sides seen by two quads) and V distinct
+ * corner nodes.  Both must equal nnodes: a node duplicated on a shared side
+ * or left unreferenced breaks one of them.  Exact integers. */
+static void node_counts(const sq_quad_mesh *m, int *referenced, int *euler)
+{
+    int Q = m->order, npe = (Q + 1) * (Q + 1);
+    char *seen = calloc((size_t)m->nnodes, 1), *corner = calloc((size_t)m->nnodes, 1);
+    int corners[4] = {sq_quad_node(Q, 0, 0), sq_quad_node(Q, Q, 0), sq_quad_node(Q, Q, Q),
+                      sq_quad_node(Q, 0, Q)};
+    int V = 0;
+    *referenced = 0;
+    for (int q = 0; q < m->nquads; q++) {
+        for (int t = 0; t < npe; t++) {
+            int n = m->conn[q * npe + t];
+            *referenced += !seen[n];
+            seen[n] = 1;
+        }
+        for (int k = 0; k < 4; k++) {
+            int n = m->conn[q * npe + corners[k]];
+            V += !corner[n];
+            corner[n] = 1;
+        }
+    }
+    long E = (4L * m->nquads + m->nbnd) / 2;
+    *euler = (int)(V + (Q - 1) * E + (long)(Q - 1) * (Q - 1) * m->nquads);
+    free(seen);
+    free(corner);
+}
+
 static int run(const char *file, int Q, double size, int check_area)
 {
     char path[4096];
@@ -90,6 +122,10 @@ static int run(const char *file, int Q, double size, int check_area)
     }
     fails += sq_check_int(ctx, "inverted quads", q.inverted, 0);
     if (Q >= 2) fails += sq_check_int(ctx, "non-conforming sides", conformity_defects(m), 0);
+    int referenced, euler;
+    node_counts(m, &referenced, &euler);
+    fails += sq_check_int(ctx, "nodes referenced by the quads", m->nnodes, referenced);
+    fails += sq_check_int(ctx, "nodes V + (Q-1)E + (Q-1)^2 F", m->nnodes, euler);
     /* the order-Q boundary's geometric error on the faces checked (straight
      * or gently curved at order >= 4), CPU-independent; round-off is far
      * below */
