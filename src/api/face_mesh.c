@@ -242,6 +242,10 @@ sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_
     /* a size that would exhaust memory is refused before any work */
     if (st == SQ_OK && o->size > 0.0)
         st = sq_mesher_check_size(h->info.area, mo.size, mo.max_quads, err);
+    if (st == SQ_OK && o->nsizes > 0)
+        st = sq_size_field_create(h->face.cad, o->sizes, o->nsizes, o->size_gradation, &h->sizes,
+                                  err);
+    mo.sizes = h->sizes;
     if (st == SQ_OK) st = run_roads(h, road, &lo, &mo, o, err);
     if (st == SQ_OK) st = sq_api_mesh_arrays(h, err);
     if (st != SQ_OK) {
@@ -302,6 +306,7 @@ void sq_mesh_free(sq_mesh **m)
     free(h->bnd);
     free(h->t_write);
     sq_quad_mesh_free(&h->q);
+    sq_size_field_free(&h->sizes);
     sq_layout_result_free(&h->r);
     sq_face_info_free(&h->info);
     sq_api_face_close(&h->face);
