@@ -157,6 +157,9 @@ static sq_status split_road(sq_mesh *h, const sq_mesher_options *mo, const sq_op
                             sq_error *err)
 {
     split_ctx c = {h->face.cad, &h->info};
+    if (o->nsizes > 0)
+        sq_api_log(o, SQ_LOG_NOTE, "the split road follows --size alone, not the %d size sources "
+                   "(docs/sizes.md)", o->nsizes);
     double t1 = sq_now();
     sq_status st = mesh_halving(mesh_by_split, &c, *mo, sq_mesher_default_size(h->info.area), o, h,
                                 err);
