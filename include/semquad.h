@@ -127,6 +127,32 @@ typedef void (*sq_progress_fn)(void *data, const char *stage, long done, long to
 
 /* ---- Options ----------------------------------------------------------- */
 
+/* A size the user sets (docs/sizes.md): size h at a source, growing
+ * linearly with the distance d from it, h + (ratio - 1) d, up to the far
+ * size (sq_options.size).  The mesh's target size h(x) is the minimum of
+ * the far size and every source's; a source's ratio is capped by
+ * sq_options.size_gradation, so neighbouring cells' sizes stay within that
+ * ratio.  Coordinates are in the face's frame (those of `semquad info`).
+ * New kinds may be added; the values of these do not change. */
+typedef enum {
+    SQ_SIZE_EDGE = 1,  /* h on CAD edge `edge` (as semquad info numbers them) */
+    SQ_SIZE_POINT = 2, /* h within radius r of point x */
+    SQ_SIZE_BOX = 3    /* h inside the box from corner x to corner x1 */
+} sq_size_kind;
+
+typedef struct {
+    sq_size_kind kind;
+    int edge;     /* SQ_SIZE_EDGE */
+    double x[2];  /* SQ_SIZE_POINT: the centre; SQ_SIZE_BOX: lower-left corner */
+    double x1[2]; /* SQ_SIZE_BOX: upper-right corner */
+    double r;     /* SQ_SIZE_POINT: radius (0: the point alone) */
+    double h;     /* the size at the source, > 0 */
+    double ratio; /* growth ratio away from it, >= 1; 0: size_gradation */
+} sq_size_source;
+
+/* The default of sq_options.size_gradation. */
+#define SQ_SIZE_GRADATION 1.3
+
 typedef struct {
     /* Reading (sq_model_open) */
     int heal;              /* 1: heal defects within the tolerance (default); 0: refuse them */
@@ -159,6 +185,9 @@ typedef struct {
     const char *road;
     int order;          /* element order Q 1..10 (default 4) */
     double size;        /* target quad size; 0: sqrt(area)/8, halved when quads fold */
+    int nsizes;         /* user sizes sizes[nsizes] (0: the uniform size alone) */
+    const sq_size_source *sizes;
+    double size_gradation; /* bound g > 1 of neighbours' size ratio (default 1.3) */
     const char *nodes;  /* "gll" (default) or "equispaced" */
     double max_quads;   /* refuse sizes giving more quads (default 2e7) */
     int nbl;            /* boundary layers on the CAD edges bl_edges[nbl] (0: none) */

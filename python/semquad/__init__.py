@@ -54,6 +54,7 @@ class _Options(ctypes.Structure):
         ("field_grading", ctypes.c_int), ("allow_misaligned", ctypes.c_int),
         ("merge_distance", ctypes.c_double),
         ("road", ctypes.c_char_p), ("order", ctypes.c_int), ("size", ctypes.c_double),
+        ("nsizes", ctypes.c_int), ("sizes", ctypes.c_void_p), ("size_gradation", ctypes.c_double),
         ("nodes", ctypes.c_char_p), ("max_quads", ctypes.c_double),
         ("nbl", ctypes.c_int), ("bl_edges", ctypes.POINTER(ctypes.c_int)),
         ("bl_first", ctypes.c_double), ("bl_ratio", ctypes.c_double), ("bl_layers", ctypes.c_int),

@@ -3,6 +3,7 @@
 #include "api_private.h"
 #include "converge.h"
 #include "outfile.h"
+#include "size_field.h"
 
 #include <math.h>
 #include <stdarg.h>
@@ -33,6 +34,7 @@ void sq_options_init(sq_options *o)
     o->nodes = "gll";
     o->max_quads = SQ_MAX_QUADS;
     o->bl_ratio = 1.2;
+    o->size_gradation = SQ_SIZE_GRADATION;
     o->min_quality = SQ_MIN_QUALITY;
 }
 
@@ -121,6 +123,9 @@ sq_status sq_api_mesher_options(const sq_options *o, sq_mesher_options *mo, sq_e
         return SQ_FAIL(err, SQ_ERR_USAGE, "order %d: expects 1..10", o->order);
     mo->order = o->order;
     mo->size = o->size;
+    if (o->nsizes < 0 || (o->nsizes > 0 && !o->sizes))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "sizes: nsizes %d without a list", o->nsizes);
+    SQ_TRY(sq_size_sources_check(o->sizes, o->nsizes, o->size_gradation, err));
     if (!o->nodes || !strcmp(o->nodes, "gll"))
         mo->nodes = SQ_NODES_GLL;
     else if (!strcmp(o->nodes, "equispaced"))

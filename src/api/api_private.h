@@ -76,6 +76,7 @@ struct sq_mesh {
     double *xyz, *sjac, *eta;
     int *bnd;
     int nbl;              /* boundary layers asked for (sq_options.nbl), for the blame */
+    sq_size_field *sizes; /* the user's sizes (NULL: none), read by the mesher */
     double origin[3], xdir[3], ydir[3];
 };
 

@@ -161,6 +161,9 @@ static sq_status split_road(sq_mesh *h, const sq_mesher_options *mo, const sq_op
                             sq_error *err)
 {
     split_ctx c = {h->face.cad, &h->info};
+    if (o->nsizes > 0)
+        sq_api_log(o, SQ_LOG_NOTE, "the split road follows --size alone, not the %d size sources "
+                   "(docs/sizes.md)", o->nsizes);
     double t1 = sq_now();
     sq_status st = mesh_halving(mesh_by_split, &c, *mo, sq_mesher_default_size(h->info.area), o, h,
                                 err);
@@ -326,6 +329,10 @@ sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
     /* a size that would exhaust memory is refused before any work */
     if (st == SQ_OK && o->size > 0.0)
         st = sq_mesher_check_size(h->info.area, mo.size, mo.max_quads, err);
+    if (st == SQ_OK && o->nsizes > 0)
+        st = sq_size_field_create(h->face.cad, o->sizes, o->nsizes, o->size_gradation, &h->sizes,
+                                  err);
+    mo.sizes = h->sizes;
     if (st == SQ_OK) st = run_roads(h, road, &lo, &mo, o, err);
     if (st == SQ_OK) st = sq_api_mesh_arrays(h, err);
     if (st != SQ_OK) {
@@ -386,6 +393,7 @@ void sq_mesh_free(sq_mesh **m)
     free(h->bnd);
     free(h->t_write);
     sq_quad_mesh_free(&h->q);
+    sq_size_field_free(&h->sizes);
     sq_layout_result_free(&h->r);
     sq_face_info_free(&h->info);
     sq_api_face_close(&h->face);

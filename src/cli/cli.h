@@ -41,6 +41,7 @@ typedef struct {
     int bl[SQ_CLI_MAX_LIST];        /* mesh --bl (opt.bl_edges points here) */
     int faces[SQ_CLI_MAX_LIST];     /* mesh --face N,M,... */
     int nfaces;                     /* 0: every planar face */
+    sq_size_source size_sources[SQ_CLI_MAX_LIST]; /* mesh's sizes (opt.sizes points here) */
     double sizes[SQ_CLI_MAX_LIST];  /* converge --sizes (opt.study_sizes points here) */
     int levels;                     /* mesh --levels L (0: one mesh) */
     int orders[SQ_CLI_MAX_LIST];    /* mesh --orders Q1,Q2,... */
@@ -193,6 +194,12 @@ sq_status sq_cli_double(const char *opt, const char *val, double lo, double hi, 
 /* Comma-separated integers in lo..hi into out[max]; *n their count. */
 sq_status sq_cli_int_list(const char *opt, const char *val, int lo, int hi, int *out, int max,
                           int *n, sq_error *err);
+
+/* mesh's size options (cli_sizes.c, docs/sizes.md): --edge-size,
+ * --grow, --refine, --refine-box add one source each; --sizes FILE its
+ * lines. */
+sq_status sq_cli_parse_size(const char *opt, const char *val, sq_cli_args *a, sq_error *err);
+sq_status sq_cli_parse_size_file(const char *opt, const char *val, sq_cli_args *a, sq_error *err);
 
 /* Print a line of the library's messages on stderr ("semquad: note: ..."),
  * the progress bar (data, may be NULL) cleared first. */

@@ -73,7 +73,10 @@ static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh
     if (st == SQ_OK) memcpy(smoothed, v->xy, sizeof(double) * 2 * (size_t)v->nv);
     double best_sj = -HUGE_VAL;
     sq_relax_work *work = NULL; /* the first relaxation's Hessian, for the second */
-    for (int attempt = 0; attempt < 3 && st == SQ_OK; attempt++) {
+    /* the relaxation's target is uniform spacing: it would undo the
+     * grading of the user's sizes (docs/sizes.md), so with sizes the
+     * transfinite grid is kept until the relaxation follows h(x) */
+    for (int attempt = opt->sizes ? 2 : 0; attempt < 3 && st == SQ_OK; attempt++) {
         sq_quad_mesh *m = NULL;
         memcpy(v->xy, smoothed, sizeof(double) * 2 * (size_t)v->nv);
         int folded = 0;

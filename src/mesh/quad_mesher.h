@@ -27,6 +27,7 @@
 
 #include "cross_field.h"
 #include "layout.h"
+#include "size_field.h"
 #include "quad_mesh.h"
 #include "sq_progress.h"
 #include "triangulate.h"
@@ -45,6 +46,9 @@ typedef struct {
      * e^H, Jezdimirović 2021 eq. 21) the target size is size * e^H, so the
      * chords follow the per-patch parametrization's scale */
     const sq_cross_field *field;
+    /* the user's size field h(x) (src/size), or NULL: the uniform size;
+     * where set, the target size is h(x) with `size` as its far size */
+    const sq_size_field *sizes;
     /* refuse (SQ_ERR_USAGE) a quantization with more quads than this,
      * before the quads are allocated (default SQ_MAX_QUADS) */
     double max_quads;

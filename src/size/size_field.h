@@ -1,0 +1,32 @@
+/* semquad — the size field h(x): the one target size every stage of the
+ * layout road reads (docs/sizes.md).  Built from the user's size sources
+ * (sq_size_source), it is the minimum of the far size and each source's
+ * contribution, each contribution growing linearly with the distance from
+ * its source, so that |grad h| <= g - 1 everywhere (g the gradation):
+ * neighbouring cells of size h, a distance h apart, differ by a factor g
+ * at most. */
+#ifndef SQ_SIZE_FIELD_H
+#define SQ_SIZE_FIELD_H
+
+#include "cad.h"
+#include "semquad.h"
+
+typedef struct sq_size_field sq_size_field;
+
+/* The field of sources src[n] on face (CAD edges sampled into polylines,
+ * so evaluation needs no CAD call); gradation g > 1.  SQ_ERR_USAGE naming
+ * the first bad source (an edge the face lacks, a non-positive size,
+ * radius or box, a ratio below 1). */
+sq_status sq_size_field_create(const cad_face *face, const sq_size_source *src, int n,
+                               double gradation, sq_size_field **out, sq_error *err);
+void sq_size_field_free(sq_size_field **f); /* NULL-safe, NULLs *f */
+
+/* h(x): the minimum of `far` (the uniform size) and every source's size at
+ * x. */
+double sq_size_field_eval(const sq_size_field *f, const double x[2], double far);
+
+/* SQ_ERR_USAGE naming the first bad source of src[n] (the checks of
+ * sq_size_field_create that need no face). */
+sq_status sq_size_sources_check(const sq_size_source *src, int n, double gradation, sq_error *err);
+
+#endif
