@@ -264,8 +264,10 @@ static sq_status run_roads(sq_mesh *h, sq_api_road road, const sq_layout_options
         st = SQ_OK;
     }
     if (st == SQ_OK && !strcmp(h->road.name, "split")) return split_road(h, mo, o, err);
+    /* not with user sizes: the split road follows --size alone, and trading
+     * the user's grading for a better worst quad is the user's call (exit 8) */
     if (st == SQ_OK && road == SQ_API_ROAD_AUTO && split_road_allowed(lo, mo) &&
-        h->quality.min_scaled_jacobian < o->min_quality)
+        o->nsizes == 0 && h->quality.min_scaled_jacobian < o->min_quality)
         try_split_for_quality(h, mo, o);
     return st;
 }
