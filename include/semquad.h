@@ -150,6 +150,22 @@ typedef struct {
     double ratio; /* growth ratio away from it, >= 1; 0: size_gradation */
 } sq_size_source;
 
+/* A name for boundary curves (docs/formats.md, "Named boundaries"): the
+ * curve `edge` (the N of the generic group boundary_N: for one face its
+ * CAD edge index as `semquad info` numbers them, for several faces the
+ * domain curve's tag as the report lists them), or, with edge = -1, the
+ * curve nearest the point (x, y).  Curves with the same name form one
+ * group; curves not named keep boundary_N.  name: [A-Za-z0-9_-]+. */
+typedef struct {
+    int edge;
+    double x, y;
+    const char *name;
+} sq_boundary_name;
+
+/* The characters of a boundary name. */
+#define SQ_NAME_CHARS "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_-"
+
+
 /* The default of sq_options.size_gradation. */
 #define SQ_SIZE_GRADATION 1.3
 
@@ -187,6 +203,8 @@ typedef struct {
     double size;        /* target quad size; 0: sqrt(area)/8, halved when quads fold */
     int nsizes;         /* user sizes sizes[nsizes] (0: the uniform size alone) */
     const sq_size_source *sizes;
+    int nnames;         /* boundary names names[nnames] (0: generic boundary_N) */
+    const sq_boundary_name *names;
     double size_gradation; /* bound g > 1 of neighbours' size ratio (default 1.3) */
     const char *nodes;  /* "gll" (default) or "equispaced" */
     double max_quads;   /* refuse sizes giving more quads (default 2e7) */

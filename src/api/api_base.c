@@ -225,6 +225,7 @@ sq_status sq_options_check(const sq_options *o, sq_error *err)
     SQ_TRY(sq_api_parse_road(o->road, &road, err));
     SQ_TRY(sq_api_layout_options(o, 1, &lo, err));
     SQ_TRY(sq_api_mesher_options(o, &mo, err));
+    SQ_TRY(sq_api_names_check(o, err));
     int methods;
     return sq_api_study_methods(o, &methods, err);
 }

@@ -84,6 +84,10 @@ struct sq_mesh {
  * and the plain arrays of the public accessors. */
 sq_status sq_api_mesh_quality(sq_mesh *h, sq_error *err);
 sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err);
+/* Boundary names (mesh_names.c): the options' names checked, and given
+ * to m's curves (m->tag_name) by edge or nearest point. */
+sq_status sq_api_names_check(const sq_options *o, sq_error *err);
+sq_status sq_api_name_tags(sq_quad_mesh *m, const sq_options *o, sq_error *err);
 
 /* sq_face_mesh with the vertices on the face's edges where held_edges[e]
  * is 1 held where they are placed (a domain's shared curves; NULL: none). */

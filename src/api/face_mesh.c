@@ -295,7 +295,11 @@ sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err)
 sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_mesh **out,
                        sq_error *err)
 {
-    return sq_api_face_mesh(model, face, o, NULL, out, err);
+    SQ_TRY(sq_api_face_mesh(model, face, o, NULL, out, err));
+    sq_options def;
+    sq_status st = sq_api_name_tags((*out)->q, sq_api_options(o, &def), err);
+    if (st != SQ_OK) sq_mesh_free(out);
+    return st;
 }
 
 sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,

@@ -11,16 +11,20 @@ static const char *kind_name(int kind)
 
 /* The groups, as write_msh.c numbers them: boundary curves 1..ntags,
  * then one surface per face. */
-static void print_groups(FILE *fp, const sq_api_domain *d)
+static void print_groups(FILE *fp, const sq_api_domain *d, const sq_quad_mesh *m)
 {
     fputs("  \"groups\": [", fp);
     int first = 1;
     for (int c = 0; c < d->ncurves; c++) {
         const sq_domain_curve *cv = &d->curves[c];
         if (cv->tag < 0) continue;
-        fprintf(fp, "%s\n    {\"dim\": 1, \"tag\": %d, \"name\": \"boundary_%d\", \"face\": %d, "
+        /* named curves (docs/formats.md): the group's physical tag */
+        char buf[32];
+        fprintf(fp, "%s\n    {\"dim\": 1, \"tag\": %d, \"name\": \"%s\", \"face\": %d, "
                     "\"edge\": %d}",
-                first ? "" : ",", cv->tag + 1, cv->tag, d->face[cv->face[0]], cv->edge[0]);
+                first ? "" : ",", sq_quad_mesh_tag_group(m, cv->tag) + 1,
+                sq_quad_mesh_tag_name(m, cv->tag, buf, sizeof buf), d->face[cv->face[0]],
+                cv->edge[0]);
         first = 0;
     }
     for (int k = 0; k < d->nfaces; k++)
@@ -54,7 +58,7 @@ static void print_report(FILE *fp, const sq_mesh *m, const sq_mesh_timings *t)
         first = 0;
     }
     fprintf(fp, "\n  ],\n  \"shared_edge_rounds\": %d,\n", d->rounds);
-    print_groups(fp, d);
+    print_groups(fp, d, m->q);
     fprintf(fp,
             "  \"mesh\": {\"quads\": %d, \"nodes\": %d, \"order\": %d, \"area\": %.17g, "
             "\"area_exact\": %.17g,\n    \"irregular_interior_vertices\": %d, \"quality\": "

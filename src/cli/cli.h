@@ -42,6 +42,8 @@ typedef struct {
     int faces[SQ_CLI_MAX_LIST];     /* mesh --face N,M,... */
     int nfaces;                     /* 0: every planar face */
     sq_size_source size_sources[SQ_CLI_MAX_LIST]; /* mesh's sizes (opt.sizes points here) */
+    sq_boundary_name names[SQ_CLI_MAX_LIST]; /* mesh --names (opt.names points here) */
+    char name_text[SQ_CLI_MAX_LIST][64];      /* their names */
     double sizes[SQ_CLI_MAX_LIST];  /* converge --sizes (opt.study_sizes points here) */
     int levels;                     /* mesh --levels L (0: one mesh) */
     int orders[SQ_CLI_MAX_LIST];    /* mesh --orders Q1,Q2,... */
@@ -200,6 +202,10 @@ sq_status sq_cli_int_list(const char *opt, const char *val, int lo, int hi, int 
  * lines. */
 sq_status sq_cli_parse_size(const char *opt, const char *val, sq_cli_args *a, sq_error *err);
 sq_status sq_cli_parse_size_file(const char *opt, const char *val, sq_cli_args *a, sq_error *err);
+
+/* mesh --names FILE (cli_names.c, docs/formats.md): lines "EDGE NAME" or
+ * "X Y NAME", each one entry of opt.names. */
+sq_status sq_cli_parse_names_file(const char *opt, const char *val, sq_cli_args *a, sq_error *err);
 
 /* Print a line of the library's messages on stderr ("semquad: note: ..."),
  * the progress bar (data, may be NULL) cleared first. */

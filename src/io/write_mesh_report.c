@@ -6,6 +6,32 @@
 
 #include <string.h>
 
+/* Named boundaries (docs/formats.md): every boundary group, its physical
+ * tag in the MSH file, name and CAD edges; only when some are named, so
+ * reports without names keep their keys. */
+static void json_groups(sq_json *j, const sq_quad_mesh *m)
+{
+    if (!m->tag_name) return;
+    sq_json_key(j, "groups");
+    sq_json_begin_array(j);
+    for (int t = 0; t < m->ntags; t++) {
+        if (sq_quad_mesh_tag_group(m, t) != t) continue;
+        char buf[32];
+        sq_json_begin_object(j);
+        sq_json_key_int(j, "dim", 1);
+        sq_json_key_int(j, "tag", t + 1);
+        sq_json_key(j, "name");
+        sq_json_string(j, sq_quad_mesh_tag_name(m, t, buf, sizeof buf));
+        sq_json_key(j, "edges");
+        sq_json_begin_array(j);
+        for (int u = t; u < m->ntags; u++)
+            if (sq_quad_mesh_tag_group(m, u) == t) sq_json_int(j, u);
+        sq_json_end_array(j);
+        sq_json_end_object(j);
+    }
+    sq_json_end_array(j);
+}
+
 void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, int face,
                           const sq_face_info *info, const sq_road_choice *road,
                           const sq_layout_result *r, const sq_quad_mesh *m,
@@ -62,6 +88,7 @@ void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, i
     sq_json_key_int(&j, "inverted", q->inverted);
     sq_json_key_number(&j, "area", q->area);
     sq_json_end_object(&j);
+    json_groups(&j, m);
     sq_json_key(&j, "timings_s");
     sq_json_begin_object(&j);
     sq_json_key_number(&j, "read", t->read);

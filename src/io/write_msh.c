@@ -74,8 +74,15 @@ sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, const sq_progre
     /* one surface, "domain"; or one per face of a domain, "face_N"
      * (docs/domains.md) */
     int ns = m->nregions > 0 ? m->nregions : 1;
-    fprintf(fp, "$PhysicalNames\n%d\n", nt + ns);
-    for (int t = 0; t < nt; t++) fprintf(fp, "1 %d \"boundary_%d\"\n", t + 1, t);
+    /* a group of named curves is the physical group of its least tag */
+    int ngroups = 0;
+    for (int t = 0; t < nt; t++) ngroups += sq_quad_mesh_tag_group(m0, t) == t;
+    fprintf(fp, "$PhysicalNames\n%d\n", ngroups + ns);
+    for (int t = 0; t < nt; t++) {
+        char buf[32];
+        if (sq_quad_mesh_tag_group(m0, t) == t)
+            fprintf(fp, "1 %d \"%s\"\n", t + 1, sq_quad_mesh_tag_name(m0, t, buf, sizeof buf));
+    }
     if (m->nregions == 0) fprintf(fp, "2 %d \"domain\"\n", nt + 1);
     for (int r = 0; r < m->nregions; r++) fprintf(fp, "2 %d \"face_%d\"\n", nt + 1 + r, m->region_face[r]);
     fputs("$EndPhysicalNames\n", fp);
@@ -84,7 +91,7 @@ sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, const sq_progre
     fprintf(fp, "$Entities\n0 %d %d 0\n", nt, ns);
     for (int t = 0; t < nt; t++)
         fprintf(fp, "%d %.17g %.17g 0 %.17g %.17g 0 1 %d 0\n", t + 1, bb[4 * t], bb[4 * t + 1],
-                bb[4 * t + 2], bb[4 * t + 3], t + 1);
+                bb[4 * t + 2], bb[4 * t + 3], sq_quad_mesh_tag_group(m0, t) + 1);
     for (int r = 0; r < ns; r++) {
         fprintf(fp, "%d %.17g %.17g 0 %.17g %.17g 0 1 %d %d", r + 1, bb[4 * nt], bb[4 * nt + 1],
                 bb[4 * nt + 2], bb[4 * nt + 3], nt + 1 + r, nt);

@@ -4,7 +4,9 @@
  * boundary sides as lines of the same order (1, 8, 26, 27, 28, 62..66), in
  * Gmsh's node order (quad_order.h) at equispaced positions (a GLL mesh is
  * resampled with its elements' Lagrange interpolants).  One curve entity and
- * physical group "boundary_<tag>" (physical tag tag+1) per boundary curve,
+ * physical group "boundary_<tag>" (physical tag tag+1) per boundary curve
+ * (curves named alike share one group, named so, the physical tag of the
+ * least of them),
  * one surface entity with physical group "domain" (physical tag ntags+1).
  * Node tag = mesh node index + 1, quad element tag = quad index + 1.
  * Format: Gmsh reference manual, "MSH file format version 4.1". */

@@ -155,13 +155,20 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_prog
         write_ranges(fp, list, n);
         fputs("] </C>\n", fp);
     }
+    /* curves named alike (docs/formats.md) are one composite, the least
+     * curve's, with the name as its NAME */
     for (int t = 0; t < m->ntags; t++) {
         int n = 0;
+        if (sq_quad_mesh_tag_group(m, t) != t) continue;
         for (int s = 0; s < m->nbnd; s++)
-            if (m->bnd_tag[s] == t) list[n++] = edge_of[4 * m->bnd_quad[s] + m->bnd_side[s]];
+            if (sq_quad_mesh_tag_group(m, m->bnd_tag[s]) == t)
+                list[n++] = edge_of[4 * m->bnd_quad[s] + m->bnd_side[s]];
         if (!n) continue;
         qsort(list, (size_t)n, sizeof *list, cmp_int);
-        fprintf(fp, "      <C ID=\"%d\"> E[", t + 1);
+        if (m->tag_name && m->tag_name[t])
+            fprintf(fp, "      <C ID=\"%d\" NAME=\"%s\"> E[", t + 1, m->tag_name[t]);
+        else
+            fprintf(fp, "      <C ID=\"%d\"> E[", t + 1);
         write_ranges(fp, list, n);
         fputs("] </C>\n", fp);
     }

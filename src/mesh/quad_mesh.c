@@ -51,6 +51,8 @@ void sq_quad_mesh_free(sq_quad_mesh **mp)
     free(m->bnd_quad);
     free(m->bnd_side);
     free(m->bnd_tag);
+    for (int t = 0; m->tag_name && t < m->ntags; t++) free(m->tag_name[t]);
+    free(m->tag_name);
     free(m->region);
     free(m->region_face);
     free(m);
@@ -313,4 +315,18 @@ sq_status sq_quad_mesh_elevate(int nverts, const double *vxy, int nquads, const 
     }
     *out = m;
     return SQ_OK;
+}
+
+int sq_quad_mesh_tag_group(const sq_quad_mesh *m, int t)
+{
+    for (int u = 0; m->tag_name && m->tag_name[t] && u < t; u++)
+        if (m->tag_name[u] && !strcmp(m->tag_name[u], m->tag_name[t])) return u;
+    return t;
+}
+
+const char *sq_quad_mesh_tag_name(const sq_quad_mesh *m, int t, char *buf, size_t n)
+{
+    if (m->tag_name && m->tag_name[t]) return m->tag_name[t];
+    snprintf(buf, n, "boundary_%d", t);
+    return buf;
 }

@@ -31,6 +31,7 @@ typedef struct {
     int *bnd_side;       /* nbnd: its local side 0..3 */
     int *bnd_tag;        /* nbnd: CAD edge index (the boundary curve, physical group) */
     int ntags;           /* boundary curves: tags are 0..ntags-1 */
+    char **tag_name;     /* ntags names (NULL: boundary_<tag>), or NULL: none named */
     /* faces of a domain (docs/domains.md): nregions > 0 faces, region[q]
      * the face (0..nregions-1) of quad q, region_face[r] that face's number
      * in the CAD file; nregions = 0, both NULL: one face */
@@ -38,6 +39,12 @@ typedef struct {
     int *region;
     int *region_face;
 } sq_quad_mesh;
+
+/* Named boundaries (docs/formats.md): the group of curve t, the least
+ * tag with its name (t itself when unnamed), and its name, buf
+ * ("boundary_<t>") when unnamed. */
+int sq_quad_mesh_tag_group(const sq_quad_mesh *m, int t);
+const char *sq_quad_mesh_tag_name(const sq_quad_mesh *m, int t, char *buf, size_t n);
 
 /* Give m nregions regions (region[] and region_face[] allocated, zeroed). */
 sq_status sq_quad_mesh_set_regions(sq_quad_mesh *m, int nregions, sq_error *err);

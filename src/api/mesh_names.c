@@ -1,0 +1,82 @@
+/* semquad public API: boundary names (sq_options.names, docs/formats.md
+ * "Named boundaries") given to the mesh's boundary curves, which the
+ * writers turn into group names. */
+#include "api_private.h"
+
+#include <math.h>
+#include <stdlib.h>
+#include <string.h>
+
+sq_status sq_api_names_check(const sq_options *o, sq_error *err)
+{
+    if (o->nnames < 0 || (o->nnames > 0 && !o->names))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "names: nnames %d without a list", o->nnames);
+    for (int k = 0; k < o->nnames; k++) {
+        const sq_boundary_name *b = &o->names[k];
+        const char *s = b->name;
+        if (!s || !*s || s[strspn(s, SQ_NAME_CHARS)])
+            return SQ_FAIL(err, SQ_ERR_USAGE, "names[%d]: name '%s', expects [A-Za-z0-9_-]+", k,
+                           s ? s : "");
+        if (b->edge < -1 || (b->edge == -1 && !(isfinite(b->x) && isfinite(b->y))))
+            return SQ_FAIL(err, SQ_ERR_USAGE, "names[%d] (%s): edge %d, expects >= 0, or -1 and a point",
+                           k, s, b->edge);
+    }
+    return SQ_OK;
+}
+
+static double segment_distance(const double *a, const double *b, double x, double y)
+{
+    double dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
+    double t = l2 > 0.0 ? ((x - a[0]) * dx + (y - a[1]) * dy) / l2 : 0.0;
+    t = fmin(1.0, fmax(0.0, t));
+    return hypot(a[0] + t * dx - x, a[1] + t * dy - y);
+}
+
+/* The tag of the boundary curve nearest (x, y) (through the polylines of
+ * its sides' nodes), refused when farther than the mean boundary side,
+ * the mesh's size along its boundary. */
+static sq_status nearest_tag(const sq_quad_mesh *m, const sq_boundary_name *b, int *tag,
+                             sq_error *err)
+{
+    int Q = m->order, npe = (Q + 1) * (Q + 1);
+    double best = HUGE_VAL, sides = 0.0;
+    for (int s = 0; s < m->nbnd; s++) {
+        const int *c = &m->conn[(size_t)m->bnd_quad[s] * npe];
+        for (int k = 0; k < Q; k++) {
+            const double *p = &m->xy[2 * (size_t)c[sq_quad_side_node(Q, m->bnd_side[s], k)]];
+            const double *q = &m->xy[2 * (size_t)c[sq_quad_side_node(Q, m->bnd_side[s], k + 1)]];
+            double d = segment_distance(p, q, b->x, b->y);
+            if (d < best) best = d, *tag = m->bnd_tag[s];
+            sides += hypot(q[0] - p[0], q[1] - p[1]);
+        }
+    }
+    double size = m->nbnd ? sides / m->nbnd : 0.0;
+    if (!(best <= size))
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "name %s: point (%g, %g) is %g from every boundary curve, farther than the "
+                       "mesh size %g",
+                       b->name, b->x, b->y, best, size);
+    return SQ_OK;
+}
+
+sq_status sq_api_name_tags(sq_quad_mesh *m, const sq_options *o, sq_error *err)
+{
+    if (o->nnames <= 0) return SQ_OK;
+    SQ_TRY(sq_api_names_check(o, err));
+    if (!(m->tag_name = calloc((size_t)m->ntags, sizeof *m->tag_name)))
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < o->nnames; k++) {
+        const sq_boundary_name *b = &o->names[k];
+        int t = b->edge;
+        if (t == -1) SQ_TRY(nearest_tag(m, b, &t, err));
+        if (t >= m->ntags)
+            return SQ_FAIL(err, SQ_ERR_USAGE, "name %s: edge %d, the boundary has edges 0..%d",
+                           b->name, t, m->ntags - 1);
+        /* a later line names the curve again: the last one wins */
+        free(m->tag_name[t]);
+        if (!(m->tag_name[t] = malloc(strlen(b->name) + 1)))
+            return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        strcpy(m->tag_name[t], b->name);
+    }
+    return SQ_OK;
+}
