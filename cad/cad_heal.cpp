@@ -433,9 +433,12 @@ void heal_face(cad_model *m, int i, double file_tol, bool given)
         d.insert(d.end(), cusps.begin(), cusps.end());
     }
     if (d.empty()) return;
+    m->heals[(size_t)i] = d;
+    // A face kept as read is not healed: its status stays "ok", its record
+    // says what healing would have left.
+    if (healed.IsSame(face)) return;
     m->faces.Substitute(i + 1, healed);
     m->status[(size_t)i] = CAD_FACE_HEALED;
-    m->heals[(size_t)i] = d;
 }
 
 } // namespace

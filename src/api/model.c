@@ -79,7 +79,8 @@ sq_status sq_model_heal_summary(const sq_model *m, int face, char **text, sq_err
     sq_api_text t;
     SQ_TRY(sq_api_text_open(&t, err));
     const char *unit = cad_model_unit(m->cad);
-    fprintf(t.fp, "face %d healed within %.3g %s: ", face, cad_model_heal_tolerance(m->cad), unit);
+    const char *what = cad_model_face_status(m->cad, face, NULL) == CAD_FACE_HEALED ? "healed" : "checked";
+    fprintf(t.fp, "face %d %s within %.3g %s: ", face, what, cad_model_heal_tolerance(m->cad), unit);
     for (int k = 0; cad_model_face_heal(m->cad, face, k, &h) == 0; k++) {
         char one[256];
         sq_heal_text(&h, unit, one, sizeof one);

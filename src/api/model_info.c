@@ -38,7 +38,7 @@ static void print_text(FILE *fp, const char *path, const cad_model *m, const fac
         for (int r = 0; cad_model_face_heal(m, f[k].index, r, &h) == 0; r++) {
             char line[256];
             sq_heal_text(&h, cad_model_unit(m), line, sizeof line);
-            fprintf(fp, "  healed: %s\n", line);
+            fprintf(fp, "  %s: %s\n", f[k].status == CAD_FACE_HEALED ? "healed" : "heal", line);
         }
         for (int l = 0; l < in->nloops; l++) {
             int first = cad_face_loop_first_edge(f[k].face, l);
