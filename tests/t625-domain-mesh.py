@@ -22,7 +22,9 @@ circle-square file too.  Each at order Q = 8, read back with Gmsh's reader:
     and no quad side on it is a boundary line element;
   - the three rectangles conform on the layout road (0 irregular vertices);
     the curved domains, whose layouts disagree on the shared curve, on the
-    split road.
+    split road;
+  - a family (--levels 2) of the whole circle-square is refused before any
+    meshing: exit 2, one line on stderr, no file written.
 usage: t625-domain-mesh.py SEMQUAD DOMAIN_FACES_PY"""
 import json
 import math
@@ -126,6 +128,15 @@ with tempfile.TemporaryDirectory() as tmp:
                              text=True, check=True).stdout
         areas = [float(l.split()[1]) for l in out.splitlines() if l.startswith("area ")]
         check(name, step, size, nfaces, shared, areas, tmp)
+        if name == "circle_square":
+            out = os.path.join(tmp, "fam.msh")
+            p = subprocess.run([SQ, "mesh", step, "--levels", "2", "-o", out], capture_output=True,
+                               text=True)
+            left = [f for f in os.listdir(tmp) if f.startswith("fam")]
+            if (p.returncode != 2 or len(p.stderr.splitlines()) != 1 or "2 faces" not in p.stderr
+                    or left):
+                fails.append(f"--levels 2 on 2 faces: exit {p.returncode}, stderr {p.stderr!r}, "
+                             f"files {left}")
     real = os.environ.get("SEMQUAD_REAL_GEOMETRIES", "")
     cs = os.path.join(real, "real_circle_square.step")
     if real and os.path.isfile(cs):

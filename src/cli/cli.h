@@ -223,8 +223,10 @@ void sq_cli_progress_clear(sq_cli_progress *p);
  * name goes into manifest[n]); then, from the mesh as made (level 1),
  * every file of the family and its manifest, one line per file on stdout;
  * SQ_ERR_QUALITY if a file's worst quad is below the floor (after writing
- * them all). */
+ * them all). sq_cli_family_faces refuses a family of several faces before
+ * meshing. */
 sq_status sq_cli_family_check(sq_cli_args *a, char *manifest, size_t n, sq_error *err);
+sq_status sq_cli_family_faces(const sq_cli_args *a, const sq_model *m, sq_error *err);
 sq_status sq_cli_family_write(const sq_mesh *mesh, const sq_cli_args *a, sq_error *err);
 
 /* Check the options (a usage error before any work), then read a->input. */
