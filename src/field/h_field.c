@@ -176,8 +176,10 @@ static sq_status edge_span(const cad_face *face, const sem_tri_mesh *m, int h, i
     if (closed) ds -= L * round(ds / L); /* the short way round */
     double s0 = ds < 0.0 ? s[0] + ds : s[0];
     if (closed) s0 -= L * floor(s0 / L);
+    double s1 = s0 + fabs(ds);
+    if (closed && s1 > L) s1 -= L; /* past the closing point */
     SQ_TRY(cad_face_edge_eval(face, tag, s0, NULL, tan[0], NULL, err));
-    SQ_TRY(cad_face_edge_eval(face, tag, s0 + fabs(ds), NULL, tan[1], NULL, err));
+    SQ_TRY(cad_face_edge_eval(face, tag, fmin(s1, L), NULL, tan[1], NULL, err));
     const double a = atan2(tan[0][0] * tan[1][1] - tan[0][1] * tan[1][0],
                            tan[0][0] * tan[1][0] + tan[0][1] * tan[1][1]);
     const double turn = a + 2.0 * M_PI * round((ik - a) / (2.0 * M_PI));
