@@ -48,7 +48,9 @@ grep -q '"kept_pairs": *1,' "$tmp/t.json" || fail "T106: not 1 kept pair"
 grep -q '"irregular_interior_vertices": *6,' "$tmp/t.json" || fail "T106: not 6 irregular"
 grep -q '"inverted": *0,' "$tmp/t.json" || fail "T106: inverted quads"
 # the kept pair named: its two points, their distance, and why (the H/θ
-# field of the 4 other points fails the solver's Neumann balance); the
+# field of the 4 other points misses the blade's holonomy by 32 deg; it
+# failed the solver's Neumann balance before the curvature data's turning
+# was made exact, t421); the
 # distance is the points' own to round-off (1e-12 of the face's size 1)
 /usr/bin/python3 - "$tmp/t.json" <<'EOF' || fail "T106: kept pair not named"
 import json, math, sys

@@ -13,8 +13,11 @@
  *  2. H_r: pure-Neumann CG solve of sem/poisson.h (−ΔH_r = 0) with
  *     ∂H_r/∂ν = κ_g − ∂H_s/∂ν on every boundary edge and the corner point
  *     fluxes s_i; Gauss–Bonnet makes the data balance exactly for a valid
- *     pattern; the quadrature residue of the data (reported) is removed as
- *     a constant shift of the flux;
+ *     pattern: on each boundary element edge of a B-spline (any edge of
+ *     varying curvature) where the rule does not resolve κ_g, the data is
+ *     the exact turning of the tangent over the edge spread evenly, so that
+ *     ∮ κ_g is the exact total turning; the quadrature residue of the data
+ *     (reported) is removed as a constant shift of the flux;
  *  3. a constant makes the mean of H zero. */
 #ifndef SQ_H_FIELD_H
 #define SQ_H_FIELD_H
