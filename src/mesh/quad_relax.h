@@ -23,11 +23,26 @@
  * boundary-layer vertices); a boundary vertex slides only when both of its
  * boundary sides lie on one CAD edge.  A step that would make a quad
  * non-convex at a corner is shortened until none does, so a valid mesh
- * stays valid. */
+ * stays valid.
+ *
+ * keep_aspect: a grid graded by the user's sizes (transfinite, its sides'
+ * nodes equidistributing the integral of 1/h) keeps its grading.  Each
+ * corner's energy is then the shape measure of Knupp's target-matrix
+ * paradigm (Knupp 2012, Eng. Comput. 28:419), |T|_F^2 / det T with
+ * T = J W^-1, its target W = diag(l1, l2) a rectangle with the quad's mean
+ * side lengths at the start in the corner's two directions: minimal (2)
+ * for a right-angled corner of the start's aspect ratio l1 / l2, whatever
+ * its scale.  That is the Winslow energy of the corner's edges scaled to
+ * (s e1, e2 / s), s^2 = l2 / l1, whose derivatives follow by the chain
+ * rule.  The target h(x) I alone would not do: this measure is invariant
+ * under scaling, so with W = h I it is Winslow's again, whose minimizer
+ * undoes the grading; weighting the corners by h(x) (Winslow's variable
+ * diffusion) keeps less of it, as docs/sizes.md measures. */
 #ifndef SQ_QUAD_RELAX_H
 #define SQ_QUAD_RELAX_H
 
 #include "cad.h"
+#include "size_field.h"
 #include "sq_progress.h"
 #include "sq_status.h"
 
@@ -44,6 +59,10 @@ typedef struct {
     int stop_on_fold;
     int folded;
     sq_progress progress; /* "relax": Newton steps of the most allowed (default silent) */
+    /* the user's size field (NULL: none, Winslow's energy) and the far
+     * size it is read with: the target-matrix energy below */
+    const sq_size_field *sizes;
+    double far;
 } sq_relax_mesh;
 
 /* What one relaxation prepares (unknowns, the Hessian's pattern, its
