@@ -162,9 +162,6 @@ static sq_status split_road(sq_mesh *h, const sq_mesher_options *mo, const sq_op
                             sq_error *err)
 {
     split_ctx c = {h->face.cad, &h->info};
-    if (o->nsizes > 0)
-        sq_api_log(o, SQ_LOG_NOTE, "the split road follows --size alone, not the %d size sources "
-                   "(docs/sizes.md)", o->nsizes);
     double t1 = sq_now();
     sq_status st = mesh_halving(mesh_by_split, &c, *mo, sq_mesher_default_size(h->info.area), o, h,
                                 err);
@@ -265,10 +262,8 @@ static sq_status run_roads(sq_mesh *h, sq_api_road road, const sq_layout_options
         st = SQ_OK;
     }
     if (st == SQ_OK && !strcmp(h->road.name, "split")) return split_road(h, mo, o, err);
-    /* not with user sizes: the split road follows --size alone, and trading
-     * the user's grading for a better worst quad is the user's call (exit 8) */
     if (st == SQ_OK && road == SQ_API_ROAD_AUTO && split_road_allowed(lo, mo) &&
-        o->nsizes == 0 && h->quality.min_scaled_jacobian < o->min_quality)
+        h->quality.min_scaled_jacobian < o->min_quality)
         try_split_for_quality(h, mo, o);
     return st;
 }
