@@ -358,9 +358,9 @@ static void corner_derivatives(const double e[4], double g[4], double H[16])
  * frame, edges e there) taken back to the corner's edges, g = S g~,
  * H = S H~ S with S = diag(s, s, 1/s, 1/s), and the size term's added:
  * its gradient f' grad D, grad D = C e, and its Hessian f'' grad D grad D^T
- * + f' C made semi-definite by keeping the part of f' C on C's eigenspace
- * of f''s sign (P+ = (I + C) / 2 when f' > 0, else P-), both terms then
- * semi-definite (f'' > 0 on a convex corner). */
+ * + f' C made semi-definite by keeping the part of f' C on the eigenspace
+ * of C whose eigenvalue has the sign of f' (P+ = (I + C) / 2 when f' > 0,
+ * else P-), both terms then semi-definite (f'' > 0 on a convex corner). */
 static void target_derivatives(double area, double s, const double e[4], double ge[4],
                                double He[16])
 {
