@@ -77,6 +77,7 @@ struct sq_mesh {
     int *bnd;
     int nbl;              /* boundary layers asked for (sq_options.nbl), for the blame */
     sq_size_field *sizes; /* the user's sizes (NULL: none), read by the mesher */
+    double far_size;      /* the size the mesh was made at (--size, or the default) */
     double origin[3], xdir[3], ydir[3];
 };
 

@@ -89,6 +89,7 @@ static sq_status mesh_halving(mesh_fn mesh, void *ctx, sq_mesher_options mo, dou
             sq_quad_mesh_free(m);
         }
         st = mesh(ctx, &mo, m, err);
+        h->far_size = mo.size > 0.0 ? mo.size : default_size;
         if (st == SQ_OK) st = sq_api_mesh_quality(h, err);
         if (o->size > 0.0 || st != SQ_OK || q->inverted == 0 || k == DEFAULT_SIZE_HALVINGS) break;
     }
@@ -161,9 +162,6 @@ static sq_status split_road(sq_mesh *h, const sq_mesher_options *mo, const sq_op
                             sq_error *err)
 {
     split_ctx c = {h->face.cad, &h->info};
-    if (o->nsizes > 0)
-        sq_api_log(o, SQ_LOG_NOTE, "the split road follows --size alone, not the %d size sources "
-                   "(docs/sizes.md)", o->nsizes);
     double t1 = sq_now();
     sq_status st = mesh_halving(mesh_by_split, &c, *mo, sq_mesher_default_size(h->info.area), o, h,
                                 err);
@@ -264,10 +262,8 @@ static sq_status run_roads(sq_mesh *h, sq_api_road road, const sq_layout_options
         st = SQ_OK;
     }
     if (st == SQ_OK && !strcmp(h->road.name, "split")) return split_road(h, mo, o, err);
-    /* not with user sizes: the split road follows --size alone, and trading
-     * the user's grading for a better worst quad is the user's call (exit 8) */
     if (st == SQ_OK && road == SQ_API_ROAD_AUTO && split_road_allowed(lo, mo) &&
-        o->nsizes == 0 && h->quality.min_scaled_jacobian < o->min_quality)
+        h->quality.min_scaled_jacobian < o->min_quality)
         try_split_for_quality(h, mo, o);
     return st;
 }
@@ -482,23 +478,53 @@ static sq_mesh_timings timings(const sq_mesh *m)
     return t;
 }
 
+/* The report's "sizes" key: the mesh against the user's sizes, when set
+ * (rep filled: the caller frees it), else *sz NULL. */
+static sq_status report_sizes(const sq_mesh *m, sq_size_report *rep, sq_report_sizes *out,
+                              const sq_report_sizes **sz, sq_error *err)
+{
+    *sz = NULL;
+    memset(rep, 0, sizeof *rep);
+    if (!m->sizes) return SQ_OK;
+    SQ_TRY(sq_size_report_compute(m->q, m->sizes, m->far_size, rep, err));
+    out->report = rep;
+    out->far = m->far_size;
+    *sz = out;
+    return SQ_OK;
+}
+
 sq_status sq_mesh_report(const sq_mesh *m, char **json, sq_error *err)
 {
     sq_mesh_timings t = timings(m);
     if (m->dom) return sq_api_domain_report(m, &t, json, err);
+    sq_size_report rep;
+    sq_report_sizes rs;
+    const sq_report_sizes *sz;
+    SQ_TRY(report_sizes(m, &rep, &rs, &sz, err));
     sq_api_text txt;
-    SQ_TRY(sq_api_text_open(&txt, err));
-    sq_print_mesh_report(txt.fp, m->face.model->path, m->face.model->cad, m->face.index, &m->info,
-                         &m->road, &m->r, m->q, &m->quality, &t);
-    return sq_api_text_close(&txt, json, err);
+    sq_status st = sq_api_text_open(&txt, err);
+    if (st == SQ_OK) {
+        sq_print_mesh_report(txt.fp, m->face.model->path, m->face.model->cad, m->face.index,
+                             &m->info, &m->road, &m->r, m->q, &m->quality, sz, &t);
+        st = sq_api_text_close(&txt, json, err);
+    }
+    sq_size_report_free(&rep);
+    return st;
 }
 
 sq_status sq_mesh_write_report(const sq_mesh *m, const char *path, sq_error *err)
 {
     sq_mesh_timings t = timings(m);
     if (m->dom) return sq_api_domain_write_report(m, &t, path, err);
-    return sq_write_mesh_report(path, m->face.model->path, m->face.model->cad, m->face.index,
-                                &m->info, &m->road, &m->r, m->q, &m->quality, &t, err);
+    sq_size_report rep;
+    sq_report_sizes rs;
+    const sq_report_sizes *sz;
+    SQ_TRY(report_sizes(m, &rep, &rs, &sz, err));
+    sq_status st = sq_write_mesh_report(path, m->face.model->path, m->face.model->cad,
+                                        m->face.index, &m->info, &m->road, &m->r, m->q,
+                                        &m->quality, sz, &t, err);
+    sq_size_report_free(&rep);
+    return st;
 }
 
 sq_status sq_mesh_describe(const sq_mesh *m, char **text, sq_error *err)

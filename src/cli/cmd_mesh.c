@@ -176,7 +176,8 @@ const sq_cli_command sq_cli_mesh = {
     .name = "mesh",
     .summary = "Block-structured high-order quad mesh of order Q: chords quantized, patches by "
                "transfinite interpolation, relaxed to the minimum of Winslow's energy with the "
-               "boundary vertices sliding on the CAD curves. Quality summary on stdout, "
+               "boundary vertices sliding on the CAD curves (with size options, of an energy "
+               "that keeps their grading: docs/sizes.md). Quality summary on stdout, "
                "progress on stderr. Where no valid layout is found, the split road meshes the "
                "face all the same, with a note, and where the layout road's worst quad is below "
                "--min-quality the split road is tried and the better mesh kept (--road auto).",

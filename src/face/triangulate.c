@@ -101,7 +101,7 @@ double sq_tri_graded_size(const sq_tri_options *opt, double size, const double x
 {
     const double h0 = opt->extra_size > 0.0 ? opt->extra_size : size / 8.0;
     const double growth = opt->extra_growth > 0.0 ? opt->extra_growth : 0.5;
-    double h = size;
+    double h = opt->user_size ? fmin(size, opt->user_size(xy, opt->user_ctx)) : size;
     for (int i = 0; i < opt->nextra; i++) {
         double hi = extra_h(opt, h0, growth, i, xy);
         if (hi < h) h = hi;
@@ -155,6 +155,7 @@ static double graded_size(const double xy[2], void *p)
         else hi = mid;
     }
     double h = c->size;
+    if (opt->user_size) h = fmin(h, opt->user_size(xy, opt->user_ctx));
     for (int j = lo; j < n && c->hmin + growth * (c->byx[j].x - xy[0]) < h; j++) {
         double hj = extra_h(opt, h0, growth, c->byx[j].i, xy);
         if (hj < h) h = hj;
@@ -503,7 +504,7 @@ static sq_status cdt_round(const cad_face *face, const sq_tri_options *opt, size
                         .holes = holes,
                         .min_angle_deg = opt->min_angle_deg,
                         .max_size = sc->size,
-                        .size = opt->nextra ? graded_size : NULL,
+                        .size = opt->nextra || opt->user_size ? graded_size : NULL,
                         .size_ctx = sc,
                         .max_vertices = opt->max_vertices,
                         .keep_segments = opt->keep_segments};

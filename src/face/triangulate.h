@@ -52,6 +52,11 @@ typedef struct {
      * of the equidistributed ones: faces of a domain sharing an edge start
      * from one discretization of it (docs/domains.md) */
     const sq_edge_points *edge_points;
+    /* NULL, or a size bound of the caller's at xy (ctx its data): the
+     * refinement's and the boundary's size is at most it there (a size
+     * field of a stage above this one, which this one cannot name) */
+    double (*user_size)(const double xy[2], void *ctx);
+    void *user_ctx;
 } sq_tri_options;
 
 /* The coarse triangulation carries a field of order up to 12 on every
@@ -74,7 +79,7 @@ double sq_tri_size(const sq_tri_options *opt, double area);
 
 /* The edge length the refinement aims at at xy: the resolved size bound
  * `size`, graded towards opt's extra points (extra_size there, growing at
- * extra_growth with the distance). */
+ * extra_growth with the distance), at most opt's user_size. */
 double sq_tri_graded_size(const sq_tri_options *opt, double size, const double xy[2]);
 
 typedef struct {

@@ -32,10 +32,46 @@ static void json_groups(sq_json *j, const sq_quad_mesh *m)
     sq_json_end_array(j);
 }
 
+/* The user's sizes against the mesh (docs/sizes.md, "The report"); only
+ * with sizes, so reports without them keep their keys. */
+static void json_sizes(sq_json *j, const sq_size_report *s, double far)
+{
+    if (!s) return;
+    sq_json_key(j, "sizes");
+    sq_json_begin_object(j);
+    sq_json_key_number(j, "far", far);
+    sq_json_key(j, "quads");
+    sq_json_begin_object(j);
+    sq_json_key_number(j, "ratio_min", s->quad_ratio_min);
+    sq_json_key_number(j, "ratio_median", s->quad_ratio_median);
+    sq_json_key_number(j, "ratio_max", s->quad_ratio_max);
+    sq_json_end_object(j);
+    sq_json_key(j, "edges");
+    sq_json_begin_array(j);
+    for (int k = 0; k < s->nedges; k++) {
+        const sq_edge_sizes *e = &s->edge[k];
+        sq_json_begin_object(j);
+        sq_json_key_int(j, "edge", e->edge);
+        sq_json_key_int(j, "segments", e->segments);
+        sq_json_key_number(j, "cells", e->cells);
+        sq_json_key_int(j, "patch_sides", e->patch_sides);
+        sq_json_key_number(j, "target_min", e->target_min);
+        sq_json_key_number(j, "target_max", e->target_max);
+        sq_json_key_number(j, "achieved_min", e->achieved_min);
+        sq_json_key_number(j, "achieved_max", e->achieved_max);
+        sq_json_key_number(j, "ratio_min", e->ratio_min);
+        sq_json_key_number(j, "ratio_max", e->ratio_max);
+        sq_json_end_object(j);
+    }
+    sq_json_end_array(j);
+    sq_json_end_object(j);
+}
+
 void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, int face,
                           const sq_face_info *info, const sq_road_choice *road,
                           const sq_layout_result *r, const sq_quad_mesh *m,
-                          const sq_quad_quality *q, const sq_mesh_timings *t)
+                          const sq_quad_quality *q, const sq_report_sizes *sz,
+                          const sq_mesh_timings *t)
 {
     sq_json j;
     sq_json_init(&j, fp);
@@ -89,6 +125,7 @@ void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, i
     sq_json_key_number(&j, "area", q->area);
     sq_json_end_object(&j);
     json_groups(&j, m);
+    json_sizes(&j, sz ? sz->report : NULL, sz ? sz->far : 0.0);
     sq_json_key(&j, "timings_s");
     sq_json_begin_object(&j);
     sq_json_key_number(&j, "read", t->read);
@@ -107,10 +144,11 @@ void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, i
 sq_status sq_write_mesh_report(const char *path, const char *input, const cad_model *model,
                                int face, const sq_face_info *info, const sq_road_choice *road,
                                const sq_layout_result *r, const sq_quad_mesh *m,
-                               const sq_quad_quality *q, const sq_mesh_timings *t, sq_error *err)
+                               const sq_quad_quality *q, const sq_report_sizes *sz,
+                               const sq_mesh_timings *t, sq_error *err)
 {
     sq_outfile f;
     SQ_TRY(sq_outfile_open(path, &f, err));
-    sq_print_mesh_report(f.fp, input, model, face, info, road, r, m, q, t);
+    sq_print_mesh_report(f.fp, input, model, face, info, road, r, m, q, sz, t);
     return sq_outfile_commit(&f, err);
 }

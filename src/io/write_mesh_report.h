@@ -1,5 +1,6 @@
 /* semquad — the JSON report of `semquad mesh` (docs/conventions.md, "The
- * report"): input, field, singularities, corners, layout, mesh, timings. */
+ * report"): input, field, singularities, corners, layout, mesh, sizes,
+ * timings. */
 #ifndef SQ_WRITE_MESH_REPORT_H
 #define SQ_WRITE_MESH_REPORT_H
 
@@ -8,6 +9,7 @@
 #include "cad.h"
 #include "layout_pipeline.h"
 #include "quad_mesh.h"
+#include "size_report.h"
 
 /* seconds per stage; total: from reading the file to the last output
  * written, the whole command after the process has started */
@@ -23,17 +25,27 @@ typedef struct {
     char reason[512];
 } sq_road_choice;
 
+/* The user's sizes against the mesh, and the far size h was read with
+ * (the "sizes" key; NULL: no sizes, no key). */
+typedef struct {
+    const sq_size_report *report;
+    double far;
+} sq_report_sizes;
+
 /* model: the file read, for the face's "healing" key; info: the face; r:
  * the layout road's result (its field and layout keys are written when
- * the road is "layout" and r holds them: a refined mesh's r is zeroed) */
+ * the road is "layout" and r holds them: a refined mesh's r is zeroed);
+ * sz: the user's sizes, or NULL */
 sq_status sq_write_mesh_report(const char *path, const char *input, const cad_model *model,
                                int face, const sq_face_info *info, const sq_road_choice *road,
                                const sq_layout_result *r, const sq_quad_mesh *m,
-                               const sq_quad_quality *q, const sq_mesh_timings *t, sq_error *err);
+                               const sq_quad_quality *q, const sq_report_sizes *sz,
+                               const sq_mesh_timings *t, sq_error *err);
 /* The same report on fp (a string, through a memory stream). */
 void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, int face,
                           const sq_face_info *info, const sq_road_choice *road,
                           const sq_layout_result *r, const sq_quad_mesh *m,
-                          const sq_quad_quality *q, const sq_mesh_timings *t);
+                          const sq_quad_quality *q, const sq_report_sizes *sz,
+                          const sq_mesh_timings *t);
 
 #endif

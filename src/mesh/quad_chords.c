@@ -132,7 +132,7 @@ double qm_measure_fraction(const double *cum, double u)
 
 /* Design 1: chord quantization. */
 sq_status qm_quantize(const sq_layout *L, const double *len, double size, const int *grade,
-                      const sq_mesher_options *o, int *n, sq_error *err)
+                      const double *need, const sq_mesher_options *o, int *n, sq_error *err)
 {
     for (int e = 0; e < L->nedges; e++) n[e] = edge_segments(len[e], size, grade[e], o);
     for (int changed = 1; changed;) {
@@ -141,6 +141,10 @@ sq_status qm_quantize(const sq_layout *L, const double *len, double size, const 
             const sq_layout_patch *p = &L->patches[q];
             for (int k = 0; k < 2; k++) {
                 long a = qm_side_count(p, k, n), c = qm_side_count(p, k + 2, n);
+                /* a refinement inside the patch: side k raised to what its
+                 * interior needs, side k + 2 matched below */
+                long want = need ? lround(need[2 * q + k] / size) : 0;
+                if (want > a && want > c) c = want;
                 if (a == c) continue;
                 int s = a < c ? k : k + 2, best = -1;
                 double ratio = -1.0;

@@ -73,15 +73,12 @@ static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh
     if (st == SQ_OK) memcpy(smoothed, v->xy, sizeof(double) * 2 * (size_t)v->nv);
     double best_sj = -HUGE_VAL;
     sq_relax_work *work = NULL; /* the first relaxation's Hessian, for the second */
-    /* the relaxation's target is uniform spacing: it would undo the
-     * grading of the user's sizes (docs/sizes.md), so with sizes the
-     * transfinite grid is kept until the relaxation follows h(x) */
-    for (int attempt = opt->sizes ? 2 : 0; attempt < 3 && st == SQ_OK; attempt++) {
+    for (int attempt = 0; attempt < 3 && st == SQ_OK; attempt++) {
         sq_quad_mesh *m = NULL;
         memcpy(v->xy, smoothed, sizeof(double) * 2 * (size_t)v->nv);
         int folded = 0;
         if (attempt < 2)
-            st = qm_relax(face, info, v, keep, attempt == 0, &opt->progress, &work, &folded, err);
+            st = qm_relax(face, info, v, keep, attempt == 0, opt, &work, &folded, err);
         if (folded) continue;
         if (st == SQ_OK && opt->nbl > 0) st = qm_bl_march(face, opt, v, err);
         if (st == SQ_OK) st = qm_raise_order(face, v, Q, opt->nodes, opt, &m, err);
@@ -150,7 +147,13 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
                                                 : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK) qm_bl_grading(L, info, opt, grade);
     if (st == SQ_OK) st = qm_size_measure(L, face, info, opt, grade, elen, cum, err);
-    if (st == SQ_OK) st = qm_quantize(L, elen, size, grade, opt, nseg, err);
+    double *need = st == SQ_OK && opt->sizes
+                       ? malloc(sizeof(double) * 2 * ((size_t)L->npatches + 1))
+                       : NULL;
+    if (st == SQ_OK && opt->sizes && !need) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK && need) st = qm_interior_measure(L, face, opt, size, need, err);
+    if (st == SQ_OK) st = qm_quantize(L, elen, size, grade, need, opt, nseg, err);
+    free(need);
     /* the quantization can exceed area / size^2 (one segment at least per
      * chord, sides matched): check its own count before allocating */
     double nquads = st == SQ_OK ? qm_quantized_quads(L, nseg) : 0.0;

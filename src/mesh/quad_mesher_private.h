@@ -49,9 +49,20 @@ sq_status qm_size_measure(const sq_layout *L, const cad_face *face, const sq_fac
                           sq_error *err);
 /* Arc-length fraction where the cumulative measure cum reaches fraction u. */
 double qm_measure_fraction(const double *cum, double u);
-/* Segments per edge n[e], opposite sides of every patch matched. */
+/* Segments per edge n[e], opposite sides of every patch matched; with
+ * need (NULL: none), no fewer on sides k and k + 2 of patch q than
+ * round(need[2 q + k] / size). */
 sq_status qm_quantize(const sq_layout *L, const double *len, double size, const int *grade,
-                      const sq_mesher_options *o, int *n, sq_error *err);
+                      const double *need, const sq_mesher_options *o, int *n, sq_error *err);
+
+/* ---- quad_interior.c ---- */
+
+/* With the user's sizes: need[2 q + k], the largest integral of size / h
+ * along the lines inside quad patch q that run like its side k (k = 0, 1),
+ * in the units of the edges' measure (qm_size_measure). */
+sq_status qm_interior_measure(const sq_layout *L, const cad_face *face,
+                              const sq_mesher_options *o, double size, double *need,
+                              sq_error *err);
 
 /* ---- quad_layers.c: boundary layers ---- */
 
@@ -96,9 +107,10 @@ int qm_quad_valid(const qm_vmesh *v, int q);
 /* Laplace untangling of the free vertices (keep: vertices held, or NULL). */
 sq_status qm_smooth(const cad_face *face, const sq_face_info *info, qm_vmesh *v, const int *keep,
                     sq_error *err);
-/* Winslow relaxation (quad_relax.h) with the singular points free or held. */
+/* Winslow relaxation (quad_relax.h) with the singular points free or held;
+ * keeping the quads' aspect ratios where opt has the user's sizes. */
 sq_status qm_relax(const cad_face *face, const sq_face_info *info, qm_vmesh *v, const int *keep,
-                   int move_singular, const sq_progress *progress, sq_relax_work **work,
+                   int move_singular, const sq_mesher_options *opt, sq_relax_work **work,
                    int *folded, sq_error *err);
 
 /* ---- quad_raise.c: design 4 ---- */

@@ -224,7 +224,63 @@ static double corner_energy(const double e[4])
     return D > 0.0 ? (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3]) / D : HUGE_VAL;
 }
 
-static double energy(const sq_relax_mesh *m)
+/* With sizes: per quad, its target (quad_relax.h) from l0 and l1, its
+ * mean lengths of sides 0 and 2 and of sides 1 and 3 at the start, scaled
+ * by c = min(1, h / max(l0, l1)), h the size at its centre:
+ * t[2 q] = sqrt(l1 / l0), t[2 q + 1] = c^2 l0 l1 (its area). */
+static void start_targets(const sq_relax_mesh *m, double *t)
+{
+    for (int q = 0; q < m->nq; q++) {
+        double l[2] = {0.0, 0.0}, x[2] = {0.0, 0.0};
+        for (int k = 0; k < 4; k++) {
+            const double *a = &m->xy[2 * m->quad[4 * q + k]],
+                         *b = &m->xy[2 * m->quad[4 * q + (k + 1) % 4]];
+            l[k % 2] += 0.5 * hypot(b[0] - a[0], b[1] - a[1]);
+            x[0] += 0.25 * a[0];
+            x[1] += 0.25 * a[1];
+        }
+        double c = fmin(1.0, sq_size_field_eval(m->sizes, x, m->far) / fmax(l[0], l[1]));
+        t[2 * q] = sqrt(l[1] / l[0]);
+        t[2 * q + 1] = c * c * l[0] * l[1];
+    }
+}
+
+/* The edges e of corner k of quad q in its target's frame (quad_relax.h:
+ * (s e1, e2 / s), s^2 = l2 / l1 the target's sides along e2 and e1), s
+ * returned; unchanged, s = 1, without targets (t NULL). */
+static double corner_target(const double *t, int q, int k, double e[4])
+{
+    if (!t) return 1.0;
+    /* e1 lies along side k, e2 along side k + 3 */
+    double s = k % 2 ? 1.0 / t[2 * q] : t[2 * q];
+    e[0] *= s;
+    e[1] *= s;
+    e[2] /= s;
+    e[3] /= s;
+    return s;
+}
+
+/* The size term of a corner of area D = e1 x e2 against its target's
+ * area A (quad_relax.h): SIZE_WEIGHT (tau + 1 / tau), tau = D / A, and
+ * its first and second derivatives in D. */
+#define SIZE_WEIGHT 0.5
+static double size_term(double D, double A, double *d1, double *d2)
+{
+    *d1 = SIZE_WEIGHT * (1.0 / A - A / (D * D));
+    *d2 = 2.0 * SIZE_WEIGHT * A / (D * D * D);
+    return SIZE_WEIGHT * (D / A + A / D);
+}
+
+/* A corner's energy: Winslow's, or with targets t its shape and size
+ * terms (e in the target's frame, whose cross product is the corner's). */
+static double target_energy(const double *t, int q, const double e[4])
+{
+    double f = corner_energy(e), d1, d2;
+    if (!t || !(f < HUGE_VAL)) return f;
+    return f + size_term(e[0] * e[3] - e[1] * e[2], t[2 * q + 1], &d1, &d2);
+}
+
+static double energy(const sq_relax_mesh *m, const double *target)
 {
     double E = 0.0;
     for (int q = 0; q < m->nq && E < HUGE_VAL; q++)
@@ -233,7 +289,8 @@ static double energy(const sq_relax_mesh *m)
             corner_vertices(m, q, k, v);
             const double *c = &m->xy[2 * v[0]], *a = &m->xy[2 * v[1]], *b = &m->xy[2 * v[2]];
             double e[4] = {a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1]};
-            E += corner_energy(e);
+            corner_target(target, q, k, e);
+            E += target_energy(target, q, e);
         }
     return E;
 }
@@ -297,6 +354,31 @@ static void corner_derivatives(const double e[4], double g[4], double H[16])
             H[4 * i + j] = 8.0 * a / s2 * (PM[4 * i + j] - wh[i] * wh[j]) + lp * z[i] * z[j];
 }
 
+/* With a target: the shape term's derivatives ge, He (in the target's
+ * frame, edges e there) taken back to the corner's edges, g = S g~,
+ * H = S H~ S with S = diag(s, s, 1/s, 1/s), and the size term's added:
+ * its gradient f' grad D, grad D = C e, and its Hessian f'' grad D grad D^T
+ * + f' C made semi-definite by keeping the part of f' C on the eigenspace
+ * of C whose eigenvalue has the sign of f' (P+ = (I + C) / 2 when f' > 0,
+ * else P-), both terms then semi-definite (f'' > 0 on a convex corner). */
+static void target_derivatives(double area, double s, const double e[4], double ge[4],
+                               double He[16])
+{
+    static const double C[16] = {0, 0, 0, 1, 0, 0, -1, 0, 0, -1, 0, 0, 1, 0, 0, 0};
+    double S[4] = {s, s, 1.0 / s, 1.0 / s}, d1, d2;
+    /* the corner's own edges' D = e1 x e2: the same in the target's frame */
+    size_term(e[0] * e[3] - e[1] * e[2], area, &d1, &d2);
+    /* C e of the corner's own edges (e1, e2) = (e~1 / s, s e~2) */
+    double gD[4] = {e[3] * s, -e[2] * s, -e[1] / s, e[0] / s};
+    double sign = d1 > 0.0 ? 1.0 : -1.0;
+    for (int i = 0; i < 4; i++) {
+        ge[i] = S[i] * ge[i] + d1 * gD[i];
+        for (int j = 0; j < 4; j++)
+            He[4 * i + j] = S[i] * S[j] * He[4 * i + j] + d2 * gD[i] * gD[j] +
+                            fabs(d1) * 0.5 * ((i == j) + sign * C[4 * i + j]);
+    }
+}
+
 /* How vertex p moves: dz = T du with u its unknowns, T the identity for a
  * free vertex, (tangent, 0) for a sliding one; 0 when it does not move. */
 static int vertex_frame(const relax_work *w, int p, double T[4])
@@ -340,8 +422,9 @@ static void corner_blocks(const double He[16], double M[6][4])
  * the vertices move little, much cheaper than factoring; by factoring H
  * when fresh, at the first step of all, or when PCG_MAXIT iterations do
  * not do: *factored.  *gd = g . d. */
-static sq_status newton_direction(const sq_relax_mesh *m, relax_work *w, int fresh, double *d,
-                                  double *gd, int *factored, sq_error *err)
+static sq_status newton_direction(const sq_relax_mesh *m, relax_work *w, int fresh,
+                                  const double *target, double *d, double *gd, int *factored,
+                                  sq_error *err)
 {
     double *g = calloc((size_t)w->ndof + 1, sizeof(double)),
            *gx = calloc(2 * (size_t)m->nv + 1, sizeof(double)),
@@ -358,7 +441,9 @@ static sq_status newton_direction(const sq_relax_mesh *m, relax_work *w, int fre
             corner_vertices(m, q, k, v);
             const double *c = &m->xy[2 * v[0]], *a = &m->xy[2 * v[1]], *b = &m->xy[2 * v[2]];
             double e[4] = {a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1]}, ge[4], He[16];
+            double sc = corner_target(target, q, k, e);
             corner_derivatives(e, ge, He);
+            if (target) target_derivatives(target[2 * q + 1], sc, e, ge, He);
             /* the gradient in the plane, per vertex (a sliding vertex's
              * component along its tangent below) */
             gx[2 * v[0]] -= ge[0] + ge[2];
@@ -526,7 +611,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
     }
     if (st == SQ_OK) st = begin(face, m, w, err);
     if (st == SQ_OK) w->steps = 0, w->polls = 0;
-    double *d = NULL, *p = NULL, *s0 = NULL, *held = NULL;
+    double *d = NULL, *p = NULL, *s0 = NULL, *held = NULL, *target = NULL;
     char *was = NULL;
     m->folded = 0;
     if (st == SQ_OK) {
@@ -535,12 +620,15 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
         s0 = malloc(sizeof(double) * ((size_t)m->nv + 1));
         held = malloc(sizeof(double) * 8 * ((size_t)m->nq + 1));
         was = malloc(4 * (size_t)m->nq + 1);
-        if (!d || !p || !s0 || !held || !was) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        if (m->sizes) target = malloc(sizeof(double) * 2 * ((size_t)m->nq + 1));
+        if (!d || !p || !s0 || !held || !was || (m->sizes && !target))
+            st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        if (target) start_targets(m, target);
         for (long i = 0; held && i < 8L * m->nq; i++)
             held[i] = -1.0;
     }
     /* a mesh with a non-convex corner is left to the caller's untangling */
-    double E = st == SQ_OK ? energy(m) : HUGE_VAL, lo[2] = {HUGE_VAL, HUGE_VAL},
+    double E = st == SQ_OK ? energy(m, target) : HUGE_VAL, lo[2] = {HUGE_VAL, HUGE_VAL},
            hi[2] = {-HUGE_VAL, -HUGE_VAL};
     for (int i = 0; i < m->nv; i++)
         for (int c = 0; c < 2; c++) {
@@ -558,7 +646,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
                 st = qr_on_edge(face, w, i, &w->s[i], &m->xy[2 * i], &w->tan[2 * i], err);
         double gd = 0.0;
         int factored = 0;
-        if (st == SQ_OK) st = newton_direction(m, w, fresh, d, &gd, &factored, err);
+        if (st == SQ_OK) st = newton_direction(m, w, fresh, target, d, &gd, &factored, err);
         if (st != SQ_OK) break;
         fresh = 0;
         w->steps++;
@@ -568,7 +656,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
         int h = 0;
         for (; h < MAX_HALVINGS && st == SQ_OK; h++, t *= 0.5) {
             st = place(face, m, w, p, s0, d, t, err);
-            if (st == SQ_OK && (E1 = energy(m)) < E) break;
+            if (st == SQ_OK && (E1 = energy(m, target)) < E) break;
         }
         /* no decrease left: converged, or an inexact direction, retried
          * with a factorization */
@@ -592,7 +680,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
          * ratios 1.2-1.3 */
         if (h == 0 && rho > DOUBLE_RHO && rho < 2.0 - 1.0 / MAX_PARABOLA_STEP) {
             st = place(face, m, w, p, s0, d, 1.0 / (2.0 - rho), err);
-            double E2 = st == SQ_OK ? energy(m) : HUGE_VAL;
+            double E2 = st == SQ_OK ? energy(m, target) : HUGE_VAL;
             if (E2 < E1)
                 E1 = E2;
             else if (st == SQ_OK)
@@ -601,7 +689,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
             double tx = 1.0;
             for (int x = 0; x < MAX_DOUBLINGS && st == SQ_OK; x++, tx *= 2.0) {
                 st = place(face, m, w, p, s0, d, 2.0 * tx, err);
-                double E2 = st == SQ_OK ? energy(m) : HUGE_VAL;
+                double E2 = st == SQ_OK ? energy(m, target) : HUGE_VAL;
                 if (!(E2 < E1)) break;
                 E1 = E2;
             }
@@ -642,6 +730,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
     if (!keep) sq_relax_work_free(&w);
     free(held);
     free(was);
+    free(target);
     free(d);
     free(p);
     free(s0);

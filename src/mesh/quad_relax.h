@@ -23,11 +23,34 @@
  * boundary-layer vertices); a boundary vertex slides only when both of its
  * boundary sides lie on one CAD edge.  A step that would make a quad
  * non-convex at a corner is shortened until none does, so a valid mesh
- * stays valid. */
+ * stays valid.
+ *
+ * With the user's sizes (sizes non-NULL) a grid graded by them (transfinite,
+ * its sides' nodes equidistributing the integral of 1/h) keeps its
+ * grading.  Each corner's energy is then a shape + size measure of
+ * Knupp's target-matrix paradigm (Knupp 2012, Eng. Comput. 28:419):
+ * with T = J W^-1, |T|_F^2 / det T + SIZE_WEIGHT (tau + 1 / tau), tau =
+ * det T, the shape term plus a size term in the spirit of TMOP's shape +
+ * size metrics (Dobrev et al. 2019, SIAM J. Sci. Comput. 41:B50).  The
+ * target W = c diag(l1, l2) is a rectangle with the quad's mean side
+ * lengths at the start in the corner's two directions, shrunk by
+ * c = min(1, h / max(l1, l2)) where the size h at the quad's centre is
+ * smaller (a refinement the sides' grading did not reach): minimal for a
+ * right-angled corner of that aspect ratio and area.  The shape term is
+ * the Winslow energy of the corner's edges scaled to (s e1, e2 / s),
+ * s^2 = l2 / l1, and the size term depends on det J alone, so the
+ * derivatives follow by the chain rule, the size term's Hessian made
+ * semi-definite on its own.  Why not W = h(x) I: the shape term is
+ * invariant under scaling, so with that target it is Winslow's energy,
+ * whose minimizer undoes the grading; and absolute areas h^2 do not add
+ * up to the face where a sheet's count is raised across coarse regions.
+ * Weighting Winslow's corners by h (variable diffusion) keeps less of the
+ * grading, as docs/sizes.md measures. */
 #ifndef SQ_QUAD_RELAX_H
 #define SQ_QUAD_RELAX_H
 
 #include "cad.h"
+#include "size_field.h"
 #include "sq_progress.h"
 #include "sq_status.h"
 
@@ -44,6 +67,10 @@ typedef struct {
     int stop_on_fold;
     int folded;
     sq_progress progress; /* "relax": Newton steps of the most allowed (default silent) */
+    /* the user's size field (NULL: none, Winslow's energy) and the far
+     * size it is read with: the target-matrix energy below */
+    const sq_size_field *sizes;
+    double far;
 } sq_relax_mesh;
 
 /* What one relaxation prepares (unknowns, the Hessian's pattern, its

@@ -16,18 +16,38 @@
  * about 1 + a (millions of points at the 0.0004 degree corner of a
  * sliver), while a triangle with that corner split in three quads is
  * valid (scaled Jacobian sin a > 0). */
+typedef struct {
+    const sq_size_field *sizes;
+    double size;
+} split_sizes;
+
+/* The triangles' size where the user set sizes: SQ_SPLIT_TRI_SIZE h(x),
+ * as at the uniform size. */
+static double split_size(const double xy[2], void *ctx)
+{
+    const split_sizes *s = ctx;
+    return SQ_SPLIT_TRI_SIZE * sq_size_field_eval(s->sizes, xy, s->size);
+}
+
 static sq_status triangulate(const cad_face *face, const sq_face_info *info, double size,
-                             double max_quads, const sq_edge_points *edge_points,
-                             sq_triangulation *tri, sq_error *err)
+                             const sq_mesher_options *opt, sq_triangulation *tri, sq_error *err)
 {
     static const double min_angle[] = {20.0, 5.0, 0.0};
     sq_tri_options to;
     sq_tri_options_default(&to);
     to.order = 1;
     to.size = SQ_SPLIT_TRI_SIZE * size;
-    to.edge_points = edge_points;
-    double budget = max_quads > 0.0 ? max_quads / 6.0 : 2e7;
-    double expected = 4.0 * fabs(info->area) / (to.size * to.size) + SQ_TRI_MAX_VERTICES;
+    to.edge_points = opt->edge_points;
+    split_sizes us = {opt->sizes, size};
+    if (opt->sizes) {
+        to.user_size = split_size;
+        to.user_ctx = &us;
+    }
+    double budget = opt->max_quads > 0.0 ? opt->max_quads / 6.0 : 2e7;
+    /* with the user's sizes area / size^2 says nothing of the count: the
+     * quad budget alone bounds it */
+    double expected = opt->sizes ? budget
+                                 : 4.0 * fabs(info->area) / (to.size * to.size) + SQ_TRI_MAX_VERTICES;
     sq_status st = SQ_OK;
     for (int k = 0; k < 3; k++) {
         to.min_angle_deg = min_angle[k];
@@ -141,7 +161,7 @@ sq_status sq_split_triangulate(const cad_face *face, const sq_face_info *info,
     memset(tri, 0, sizeof *tri);
     double size = opt->size > 0.0 ? opt->size : sq_mesher_default_size(info->area);
     if (opt->max_quads > 0.0) SQ_TRY(sq_mesher_check_size(info->area, size, opt->max_quads, err));
-    SQ_TRY(triangulate(face, info, size, opt->max_quads, opt->edge_points, tri, err));
+    SQ_TRY(triangulate(face, info, size, opt, tri, err));
     double nquads = 3.0 * tri->mesh->ntris;
     if (opt->max_quads > 0.0 && nquads > opt->max_quads) {
         sq_triangulation_free(tri);

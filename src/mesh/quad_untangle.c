@@ -168,9 +168,10 @@ sq_status qm_smooth(const cad_face *face, const sq_face_info *info, qm_vmesh *v,
  * (quad_relax.h); what stays: singular points (interior vertices of valence
  * other than 4), the face's corners and the boundary layers.  With the
  * singular points free the relaxation gives up once it folds a curved
- * boundary quad (*folded): the attempt with them held follows. */
+ * boundary quad (*folded): the attempt with them held follows.  With the
+ * user's sizes (opt->sizes) the quads keep the grid's grading. */
 sq_status qm_relax(const cad_face *face, const sq_face_info *info, qm_vmesh *v, const int *keep,
-                   int move_singular, const sq_progress *progress, sq_relax_work **work,
+                   int move_singular, const sq_mesher_options *opt, sq_relax_work **work,
                    int *folded, sq_error *err)
 {
     int *deg = calloc((size_t)v->nv + 1, sizeof(int)), *bnd = calloc((size_t)v->nv + 1, sizeof(int));
@@ -190,7 +191,9 @@ sq_status qm_relax(const cad_face *face, const sq_face_info *info, qm_vmesh *v, 
     for (int i = 0; i < v->nv; i++)
         fixed[i] = (keep && keep[i]) || (!bnd[i] && deg[i] != 4 && !move_singular) ||
                    (bnd[i] && at_face_corner(info, &v->xy[2 * i]));
-    sq_relax_mesh rm = {v->nv, v->nq, v->xy, v->quad, v->side_tag, fixed, move_singular, 0, *progress};
+    double far = opt->size > 0.0 ? opt->size : sq_mesher_default_size(info->area);
+    sq_relax_mesh rm = {v->nv,         v->nq, v->xy,          v->quad,          v->side_tag, fixed,
+                        move_singular, 0,     opt->progress, opt->sizes, far};
     sq_status st = sq_quad_relax(face, &rm, work, err);
     *folded = rm.folded;
     free(deg);
