@@ -62,17 +62,29 @@ static sq_status pair_gap(const cad_face *f, int a, int b, const double T[6], do
     return SQ_OK;
 }
 
+/* The vertex where edge e starts (end 0) or ends (end 1): the CAD
+ * vertices themselves, not an arc length's inversion (which rounds to the
+ * integration's tolerance). */
+static int vertex_of(const sq_face_info *info, int e, int end, double xy[2])
+{
+    for (int v = 0; v < info->nvertices; v++)
+        if ((end ? info->vertices[v].edge_in : info->vertices[v].edge_out) == e) {
+            xy[0] = info->vertices[v].x, xy[1] = info->vertices[v].y;
+            return 1;
+        }
+    return 0;
+}
+
 /* Edge a onto edge b (senses opposite): *ok and the transform in r. */
-static sq_status match(const cad_face *f, int a, int b, double tol, sq_periodic_pair *r, int *ok,
-                       sq_error *err)
+static sq_status match(const cad_face *f, const sq_face_info *info, int a, int b, double tol,
+                       sq_periodic_pair *r, int *ok, sq_error *err)
 {
     *ok = 0;
     if (fabs(cad_face_edge_length(f, a) - cad_face_edge_length(f, b)) > tol) return SQ_OK;
     double p0[2], p1[2], q0[2], q1[2];
-    SQ_TRY(edge_at(f, a, 0.0, p0, err));
-    SQ_TRY(edge_at(f, a, 1.0, p1, err));
-    SQ_TRY(edge_at(f, b, 1.0, q0, err));
-    SQ_TRY(edge_at(f, b, 0.0, q1, err));
+    if (!vertex_of(info, a, 0, p0) || !vertex_of(info, a, 1, p1) || !vertex_of(info, b, 1, q0) ||
+        !vertex_of(info, b, 0, q1))
+        return SQ_OK; /* a closed edge: no chord */
     r->a = a, r->b = b, r->group = -1;
     if (!fit(p0, p1, q0, q1, tol, r)) return SQ_OK;
     SQ_TRY(pair_gap(f, a, b, r->affine, &r->gap, err));
@@ -138,7 +150,7 @@ static sq_status check_named(const cad_face *f, const sq_face_info *info, sq_per
     for (int k = 0; k < p->npairs; k++) {
         sq_periodic_pair *r = &p->pairs[k];
         int a = r->a, b = r->b, ok;
-        SQ_TRY(match(f, a, b, p->tol, r, &ok, err));
+        SQ_TRY(match(f, info, a, b, p->tol, r, &ok, err));
         if (!ok)
             return SQ_FAIL(err, SQ_ERR_PERIODIC,
                            "--periodic %d:%d: edges %d (length %.9g) and %d (length %.9g) do not "
@@ -167,7 +179,7 @@ static sq_status all_matches(const cad_face *f, const sq_face_info *info, double
             sq_periodic_pair r;
             int ok;
             if (a == b) continue;
-            SQ_TRY(match(f, a, b, tol, &r, &ok, err));
+            SQ_TRY(match(f, info, a, b, tol, &r, &ok, err));
             if (!ok) continue;
             for (int k = 0; k < *n && r.group < 0; k++)
                 if (same_transform((*all)[k].affine, r.affine, info->bbox, tol)) take_transform(&r, &(*all)[k]);
@@ -213,8 +225,10 @@ static sq_status take_groups(const cad_face *f, sq_periodic_pair *all, int n, in
         for (int k = 0; k < n; k++)
             if (all[k].group == g) used[all[k].a] = used[all[k].b] = 1, p->pairs[p->npairs++] = all[k];
     }
-    for (int k = 0; k < n; k++) /* one of each pair of mutually inverse candidates */
-        if (taken[all[k].group] != 1 && all[k].a < all[k].b) p->candidates[p->ncandidates++] = all[k];
+    /* one of each two mutually inverse candidates; none of a pair taken */
+    for (int k = 0; k < n; k++)
+        if (taken[all[k].group] != 1 && all[k].a < all[k].b && !(used[all[k].a] && used[all[k].b]))
+            p->candidates[p->ncandidates++] = all[k];
     free(len), free(used), free(taken), free(rot);
     return SQ_OK;
 }
