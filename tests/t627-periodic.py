@@ -5,8 +5,8 @@ Two faces built here: the project's own T106-like cascade passage
 (tests/cascade_aerofoil.py: periodic lines of four segments one pitch,
 0.8, apart) and 1/8 of the ring 0.5 <= r <= 1 (tests/domain_faces.py
 sector: its radial sides periodic under the rotation by 45 deg about the
-origin); with $SEMQUAD_REAL_GEOMETRIES, NekMesh's real T106 file too (pitch
-0.798).  Each meshed with `--periodic auto` at order 6, then:
+origin), and examples/square.step, periodic both ways (a torus); with
+$SEMQUAD_REAL_GEOMETRIES, NekMesh's real T106 file too (pitch 0.798).  Each meshed with `--periodic auto` at order 6, then:
 
   - the pairs found are the expected edges under the expected transform;
   - Gmsh's reader loads the MSH file with its $Periodic section and
@@ -23,12 +23,13 @@ origin); with $SEMQUAD_REAL_GEOMETRIES, NekMesh's real T106 file too (pitch
   - every quad valid (the report's Bezier bound: inverted 0, min scaled
     Jacobian > 0);
   - the identified domain: Euler characteristic (passage with a blade, its
-    periodic lines glued: -1; the sector glued: a ring, 0), the net index
-    its interior vertices need by Gauss-Bonnet (-4 and 0: the corners merge
-    in pairs to straight angles, the kinks to full turns), and the mesh's
+    periodic lines glued: -1; the sector glued: a ring, 0; the square: a
+    torus, 0), the net index its interior vertices need by Gauss-Bonnet
+    (-4, 0 and 0: the corners merge in pairs to straight angles, the kinks
+    and the square's four corners to full turns), and the mesh's
     irregular vertices there at least that many; the sector, whose single
     layout patch puts the same nodes on both radial sides, on the layout
-    road with no irregular vertex at all;
+    road with no irregular vertex at all, as the square;
   - Nektar++ XML: one composite per periodic side, both with as many edges;
   - `--periodic 0:1` on the cascade (lengths 1.67 and 0.4) exits 9 with
     one line on stderr and writes nothing.
@@ -177,6 +178,10 @@ def main():
         subprocess.run([sys.executable, GEN, "sector", sector], check=True, capture_output=True)
         check("sector", sector, {"pairs": {(0, 2)}, "kind": "rotation", "transform": rotation(45),
                                  "chi": 0, "index": 0, "layout": 1}, tmp)
+        square = os.path.join(os.environ.get("SQ_EXAMPLES", "examples"), "square.step")
+        check("square", square, {"pairs": {(0, 2), (1, 3)}, "kind": "translation",
+                                 "transform": lambda a: translation(0, 1)(a) or
+                                 translation(-1, 0)(a), "chi": 0, "index": 0, "layout": 1}, tmp)
         refusal(tmp)
         real = os.path.join(os.environ.get("SEMQUAD_REAL_GEOMETRIES", ""), "real_t106_cascade.step")
         if os.environ.get("SEMQUAD_REAL_GEOMETRIES") and os.path.exists(real):

@@ -222,8 +222,10 @@ static sq_status take_groups(const cad_face *f, sq_periodic_pair *all, int n, in
         taken[g] = clash ? -1 : 1;
         if (clash) continue;
         best = len[g];
+        /* a half turn is its own inverse: its group holds (a, b) and (b, a) */
         for (int k = 0; k < n; k++)
-            if (all[k].group == g) used[all[k].a] = used[all[k].b] = 1, p->pairs[p->npairs++] = all[k];
+            if (all[k].group == g && !used[all[k].a] && !used[all[k].b])
+                used[all[k].a] = used[all[k].b] = 1, p->pairs[p->npairs++] = all[k];
     }
     /* one of each two mutually inverse candidates; none of a pair taken */
     for (int k = 0; k < n; k++)

@@ -140,30 +140,11 @@ static int pair_of(const sq_periodic *p, int e)
     return -1;
 }
 
-/* chi of the identified domain: each chain pair glued lowers chi by one,
- * unless its two chains share an end (a sector with its centre: a cone). */
-static int identified_chi(const sq_face_info *info, const sq_periodic *p)
-{
-    int chi = info->chi;
-    for (int k = 0; k < p->npairs; k++) {
-        int g = p->pairs[k].group, first = 1, shared = 0;
-        for (int j = 0; j < k; j++) first &= p->pairs[j].group != g;
-        if (!first) continue;
-        for (int v = 0; v < info->nvertices; v++) {
-            int in = pair_of(p, info->vertices[v].edge_in), out = pair_of(p, info->vertices[v].edge_out);
-            int ea = info->vertices[v].edge_in, eb = info->vertices[v].edge_out;
-            /* a vertex between a chain's a-edge and a b-edge of the same group */
-            if (in >= 0 && out >= 0 && p->pairs[in].group == g && p->pairs[out].group == g &&
-                (p->pairs[in].a == ea) != (p->pairs[out].a == eb))
-                shared = 1;
-        }
-        chi -= 1 - shared;
-    }
-    return chi;
-}
-
-/* Design 3, the domain: its corners are classes of the face's vertices
- * (a pair joins a's start with b's end and a's end with b's start); a
+/* Design 3, the domain: its vertices are classes of the face's vertices
+ * (a pair joins a's start with b's end and a's end with b's start), its
+ * edges the face's less one per pair, its inside the face's: chi = the
+ * face's chi - (vertices - classes) + pairs (a passage glued: -1; a square
+ * glued both ways: a torus, 0; a sector with its centre: a cone, 1).  A
  * class whose every edge is periodic is interior (index 4 - round(sum of
  * angles / 90)), else a corner (2 - round(sum / 90)). */
 static sq_status identified_index(const sq_face_info *info, const sq_periodic *p, int *chi,
@@ -190,10 +171,10 @@ static sq_status identified_index(const sq_face_info *info, const sq_periodic *p
         angle[find(up, v)] += x->angle_deg;
         open[find(up, v)] |= pair_of(p, x->edge_in) < 0 || pair_of(p, x->edge_out) < 0;
     }
-    *chi = identified_chi(info, p);
-    int sum = 0;
+    int sum = 0, classes = 0;
     for (int v = 0; v < nv; v++)
-        if (find(up, v) == v) sum += (open[v] ? 2 : 4) - (int)lround(angle[v] / 90.0);
+        if (find(up, v) == v) classes++, sum += (open[v] ? 2 : 4) - (int)lround(angle[v] / 90.0);
+    *chi = info->chi - (nv - classes) + p->npairs;
     *index = 4 * *chi - sum;
     free(up), free(angle), free(open);
     return SQ_OK;
