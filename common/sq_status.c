@@ -41,6 +41,7 @@ const char *sq_status_name(sq_status code)
     case SQ_ERR_LAYOUT: return "no valid layout";
     case SQ_ERR_OUTPUT: return "output error";
     case SQ_ERR_QUALITY: return "quality below the floor";
+    case SQ_ERR_PERIODIC: return "periodic edges do not match";
     }
     return "unknown error";
 }

@@ -60,8 +60,10 @@ typedef enum {
     SQ_ERR_PATTERN = 5,  /* invalid singularity pattern */
     SQ_ERR_LAYOUT = 6,   /* no valid layout / no valid all-quad mesh */
     SQ_ERR_OUTPUT = 7,   /* output could not be written */
-    SQ_ERR_QUALITY = 8   /* a mesh was made, but its worst quad is below the quality floor
+    SQ_ERR_QUALITY = 8,  /* a mesh was made, but its worst quad is below the quality floor
                             (sq_mesh_check_quality) */
+    SQ_ERR_PERIODIC = 9  /* periodic edges named that do not match, or none found
+                            (sq_options.periodic) */
 } sq_status;
 
 typedef struct {
@@ -205,6 +207,11 @@ typedef struct {
     const sq_size_source *sizes;
     int nnames;         /* boundary names names[nnames] (0: generic boundary_N) */
     const sq_boundary_name *names;
+    /* Periodic boundaries of one face (docs/domains.md): NULL, none;
+     * "auto", the pairs of edges that match under a translation or a
+     * rotation; "A:B[,C:D...]", those edges (SQ_ERR_PERIODIC if they do not
+     * match). The mesh's nodes on B are the images of A's. */
+    const char *periodic;
     double size_gradation; /* bound g > 1 of neighbours' size ratio (default 1.3) */
     const char *nodes;  /* "gll" (default) or "equispaced" */
     double max_quads;   /* refuse sizes giving more quads (default 2e7) */

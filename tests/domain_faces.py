@@ -8,7 +8,10 @@ kernel (python3-gmsh) and fragmented so that faces share their edges:
   three_row      three rectangles [0,1]x[0,1], [1,2.5]x[0,1], [2.5,3]x[0,1]
                  in a row, sharing two straight edges;
   hole_filled    the square [0,2]^2 with an elliptic hole (centre (1,1),
-                 semi-axes 0.6, 0.35) filled by the ellipse as a second face.
+                 semi-axes 0.6, 0.35) filled by the ellipse as a second face;
+  sector         one face: 1/8 of the ring 0.5 <= r <= 1 about the origin,
+                 0 <= angle <= 45 deg (its radial sides periodic under the
+                 rotation by 45 deg, docs/domains.md).
 
 usage: domain_faces.py NAME OUT.step; prints the exact face areas, one a line."""
 import math
@@ -34,6 +37,15 @@ def build(name):
         b = occ.addDisk(1, 1, 0, 0.6, 0.35)
         occ.fragment([(2, a)], [(2, b)])
         return [4 - math.pi * 0.6 * 0.35, math.pi * 0.6 * 0.35]
+    if name == "sector":
+        p = [occ.addPoint(r * math.cos(a), r * math.sin(a), 0)
+             for r, a in ((0.5, 0), (1, 0), (1, math.pi / 4), (0.5, math.pi / 4))]
+        c = occ.addPoint(0, 0, 0)
+        lines = [occ.addLine(p[0], p[1]), occ.addCircleArc(p[1], c, p[2]),
+                 occ.addLine(p[2], p[3]), occ.addCircleArc(p[3], c, p[0])]
+        occ.addPlaneSurface([occ.addCurveLoop(lines)])
+        occ.remove([(0, c)])
+        return [math.pi / 8 * (1 - 0.25)]
     raise SystemExit("unknown domain " + name)
 
 

@@ -25,7 +25,8 @@ __all__ = ["Error", "Model", "Face", "Mesh", "open", "version", "gmsh_order"]
 class Error(Exception):
     """A semquad failure: .status is the C status (the `semquad` command's
     exit status: 1 internal, 2 usage, 3 input, 4 geometry, 5 pattern,
-    6 layout, 7 output, 8 quality below the floor), str() semquad's
+    6 layout, 7 output, 8 quality below the floor, 9 periodic edges that
+    do not match), str() semquad's
     one-line message."""
 
     def __init__(self, status, message):
@@ -55,7 +56,8 @@ class _Options(ctypes.Structure):
         ("merge_distance", ctypes.c_double),
         ("road", ctypes.c_char_p), ("order", ctypes.c_int), ("size", ctypes.c_double),
         ("nsizes", ctypes.c_int), ("sizes", ctypes.c_void_p),
-        ("nnames", ctypes.c_int), ("names", ctypes.c_void_p), ("size_gradation", ctypes.c_double),
+        ("nnames", ctypes.c_int), ("names", ctypes.c_void_p), ("periodic", ctypes.c_char_p),
+        ("size_gradation", ctypes.c_double),
         ("nodes", ctypes.c_char_p), ("max_quads", ctypes.c_double),
         ("nbl", ctypes.c_int), ("bl_edges", ctypes.POINTER(ctypes.c_int)),
         ("bl_first", ctypes.c_double), ("bl_ratio", ctypes.c_double), ("bl_layers", ctypes.c_int),

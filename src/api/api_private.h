@@ -7,6 +7,7 @@
 #include "cad.h"
 #include "domain.h"
 #include "layout_pipeline.h"
+#include "periodic.h"
 #include "quad_mesher.h"
 #include "semquad.h"
 #include "write_mesh_report.h"
@@ -78,6 +79,8 @@ struct sq_mesh {
     int nbl;              /* boundary layers asked for (sq_options.nbl), for the blame */
     sq_size_field *sizes; /* the user's sizes (NULL: none), read by the mesher */
     double far_size;      /* the size the mesh was made at (--size, or the default) */
+    sq_periodic per;      /* --periodic pairs (npairs 0: none) */
+    int *per_held;        /* their edges, held by the mesher */
     double origin[3], xdir[3], ydir[3];
 };
 

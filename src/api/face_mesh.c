@@ -2,6 +2,7 @@
  * road (field, layout, patches), or the split road (quad_split.h) when it
  * fails or is asked for. */
 #include "api_private.h"
+#include "periodic.h"
 #include "quad_split.h"
 #include "write_msh.h"
 #include "write_nektar.h"
@@ -102,28 +103,56 @@ static sq_status mesh_halving(mesh_fn mesh, void *ctx, sq_mesher_options mo, dou
     return st;
 }
 
+/* The size the mesher takes (mo's, else its default for the area). */
+static double mesher_size(const sq_mesher_options *mo, double area)
+{
+    return mo->size > 0.0 ? mo->size : sq_mesher_default_size(area);
+}
+
 typedef struct {
     const cad_face *face;
     const sq_layout_result *r;
+    const sq_periodic *per; /* NULL: none */
 } layout_ctx;
 
+/* With periodic pairs the layout's mesh is kept only where its nodes on
+ * each pair agree (periodic.h design 2): SQ_ERR_LAYOUT sends the face to
+ * the split road. */
 static sq_status mesh_by_layout(void *ctx, const sq_mesher_options *mo, sq_quad_mesh **m,
                                 sq_error *err)
 {
     const layout_ctx *c = ctx;
-    return sq_mesh_layout(c->face, c->r->info, &c->r->layout, mo, m, err);
+    SQ_TRY(sq_mesh_layout(c->face, c->r->info, &c->r->layout, mo, m, err));
+    if (!c->per) return SQ_OK;
+    sq_status st = sq_periodic_link(c->per, *m, mesher_size(mo, c->r->layout.face_area), err);
+    if (st != SQ_OK) sq_quad_mesh_free(m);
+    return st;
 }
 
 typedef struct {
     const cad_face *face;
     const sq_face_info *info;
+    const sq_periodic *per; /* NULL: none */
 } split_ctx;
 
+/* With periodic pairs: the face as a domain of one face whose interfaces
+ * are the pairs, its triangulations exchanging their vertices
+ * (domain.h design 2), then the partners linked. */
 static sq_status mesh_by_split(void *ctx, const sq_mesher_options *mo, sq_quad_mesh **m,
                                sq_error *err)
 {
     const split_ctx *c = ctx;
-    return sq_mesh_split(c->face, c->info, mo, m, err);
+    if (!c->per) return sq_mesh_split(c->face, c->info, mo, m, err);
+    sq_domain d;
+    int rounds = 0;
+    sq_mesher_options o = *mo;
+    o.size = mesher_size(mo, c->info->area);
+    SQ_TRY(sq_periodic_domain(&c->face, c->info, c->per, &d, err));
+    sq_status st = sq_domain_mesh_split(&d, &o, m, &rounds, err);
+    sq_domain_free(&d);
+    if (st == SQ_OK) st = sq_periodic_link(c->per, *m, o.size, err);
+    if (st != SQ_OK) sq_quad_mesh_free(m);
+    return st;
 }
 
 /* The layout road: field, layout (sq_layout_run), quads (sq_mesh_layout). */
@@ -150,7 +179,7 @@ static sq_status layout_road(sq_mesh *h, const sq_layout_options *lo, sq_mesher_
         cf = sq_htheta_cross_field(&r->htheta);
         mo->field = &cf;
     }
-    layout_ctx c = {h->face.cad, r};
+    layout_ctx c = {h->face.cad, r, h->per.npairs ? &h->per : NULL};
     st = mesh_halving(mesh_by_layout, &c, *mo, sq_mesher_default_size(r->layout.face_area), o, h,
                       err);
     mo->field = NULL;
@@ -161,7 +190,7 @@ static sq_status layout_road(sq_mesh *h, const sq_layout_options *lo, sq_mesher_
 static sq_status split_road(sq_mesh *h, const sq_mesher_options *mo, const sq_options *o,
                             sq_error *err)
 {
-    split_ctx c = {h->face.cad, &h->info};
+    split_ctx c = {h->face.cad, &h->info, h->per.npairs ? &h->per : NULL};
     double t1 = sq_now();
     sq_status st = mesh_halving(mesh_by_split, &c, *mo, sq_mesher_default_size(h->info.area), o, h,
                                 err);
@@ -298,6 +327,56 @@ sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_
     return st;
 }
 
+/* The pair's transform, as a phrase. */
+static void transform_text(const sq_periodic_pair *r, char *buf, size_t n)
+{
+    if (r->rotation)
+        snprintf(buf, n, "rotation by %.9g deg about (%.9g, %.9g)", r->angle_deg, r->centre[0],
+                 r->centre[1]);
+    else
+        snprintf(buf, n, "translation by (%.9g, %.9g)", r->shift[0], r->shift[1]);
+}
+
+/* --periodic: the pairs (periodic.h design 1), logged; their edges held. */
+static sq_status periodic_find(sq_mesh *h, sq_mesher_options *mo, const sq_options *o,
+                               sq_error *err)
+{
+    SQ_TRY(sq_periodic_find(h->face.cad, &h->info, o->periodic, &h->per, err));
+    int ne = cad_face_num_edges(h->face.cad);
+    if (!(h->per_held = malloc(sizeof(int) * ((size_t)ne + 1))))
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    sq_periodic_held(&h->per, h->per_held, ne);
+    mo->held_edges = h->per_held;
+    char t[160];
+    for (int k = 0; k < h->per.npairs; k++) {
+        const sq_periodic_pair *r = &h->per.pairs[k];
+        transform_text(r, t, sizeof t);
+        sq_api_log(o, SQ_LOG_NOTE, "periodic: edge %d is the image of edge %d under the %s (gap "
+                   "%.2g, tolerance %.2g)", r->b, r->a, t, r->gap, h->per.tol);
+    }
+    for (int k = 0; k < h->per.ncandidates; k++) {
+        const sq_periodic_pair *r = &h->per.candidates[k];
+        transform_text(r, t, sizeof t);
+        sq_api_log(o, SQ_LOG_NOTE, "periodic: edges %d and %d also match (%s), not taken: "
+                   "--periodic %d:%d takes them", r->a, r->b, t, r->a, r->b);
+    }
+    return SQ_OK;
+}
+
+/* The identified domain's Gauss–Bonnet count against the mesh's. */
+static sq_status periodic_identified(sq_mesh *h, const sq_options *o, sq_error *err)
+{
+    sq_quad_mesh *q = h->q;
+    SQ_TRY(sq_periodic_identified(&h->info, &h->per, q, &q->periodic_chi, &q->periodic_index,
+                                  &q->periodic_irregular, &q->periodic_mesh_index, err));
+    sq_api_log(o, SQ_LOG_NOTE, "periodic: the identified domain has chi %d; its interior vertices "
+               "need a net index %d (at least %d irregular); the mesh has %d irregular there "
+               "(net index %d), by the %s road",
+               q->periodic_chi, q->periodic_index, abs(q->periodic_index), q->periodic_irregular,
+               q->periodic_mesh_index, h->road.name);
+    return SQ_OK;
+}
+
 sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
                            const int *held_edges, sq_mesh **out, sq_error *err)
 {
@@ -335,7 +414,9 @@ sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
         st = sq_size_field_create(h->face.cad, o->sizes, o->nsizes, o->size_gradation, &h->sizes,
                                   err);
     mo.sizes = h->sizes;
+    if (st == SQ_OK && o->periodic && !held_edges) st = periodic_find(h, &mo, o, err);
     if (st == SQ_OK) st = run_roads(h, road, &lo, &mo, o, err);
+    if (st == SQ_OK && h->per.npairs) st = periodic_identified(h, o, err);
     if (st == SQ_OK) st = sq_api_mesh_arrays(h, err);
     if (st != SQ_OK) {
         sq_mesh_free(&h);
@@ -400,6 +481,8 @@ void sq_mesh_free(sq_mesh **m)
     sq_face_info_free(&h->info);
     sq_api_face_close(&h->face);
     sq_api_domain_free(&h->dom);
+    sq_periodic_free(&h->per);
+    free(h->per_held);
     free(h);
     *m = NULL;
 }

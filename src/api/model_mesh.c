@@ -214,6 +214,11 @@ sq_status sq_model_mesh(const sq_model *m, const int *faces, int nfaces, const s
         free(all);
         return sq_face_mesh(m, f, o, out, err);
     }
+    if (o->periodic) {
+        free(all);
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--periodic takes one face (--face N): the pairs of a "
+                                          "domain of %d faces are not done yet", nfaces);
+    }
     sq_mesh *h = calloc(1, sizeof *h);
     sq_status st = h && (h->t_write = calloc(1, sizeof *h->t_write))
                        ? SQ_OK

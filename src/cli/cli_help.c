@@ -100,6 +100,7 @@ void sq_cli_overview(void)
           "\n"
           "exit status: 0 ok, 1 internal error, 2 usage, 3 bad input file, 4 unsupported\n"
           "geometry, 5 invalid singularity pattern, 6 no valid layout, 7 output not written,\n"
-          "8 mesh written but its quality below --min-quality.\n",
+          "8 mesh written but its quality below --min-quality, 9 --periodic edges that do not\n"
+          "match.\n",
           stdout);
 }

@@ -67,6 +67,42 @@ static void json_sizes(sq_json *j, const sq_size_report *s, double far)
     sq_json_end_object(j);
 }
 
+/* Periodic links (docs/domains.md): each pair's edges, its transform and
+ * node count; the identified domain's Gauss–Bonnet count and the mesh's. */
+static void json_periodic(sq_json *j, const sq_quad_mesh *m)
+{
+    if (m->nperiodic == 0) return;
+    sq_json_key(j, "periodic");
+    sq_json_begin_object(j);
+    sq_json_key(j, "pairs");
+    sq_json_begin_array(j);
+    for (int l = 0; l < m->nperiodic; l++) {
+        const sq_quad_periodic *p = &m->periodic[l];
+        sq_json_begin_object(j);
+        sq_json_key(j, "edges");
+        sq_json_begin_array(j);
+        sq_json_int(j, p->master);
+        sq_json_int(j, p->tag);
+        sq_json_end_array(j);
+        sq_json_key(j, "kind");
+        sq_json_string(j, p->affine[3] != 0.0 ? "rotation" : "translation");
+        sq_json_key(j, "affine");
+        sq_json_begin_array(j);
+        for (int k = 0; k < 6; k++) sq_json_number(j, p->affine[k]);
+        sq_json_end_array(j);
+        sq_json_key_int(j, "nodes", p->nnodes);
+        sq_json_end_object(j);
+    }
+    sq_json_end_array(j);
+    sq_json_key_int(j, "identified_chi", m->periodic_chi);
+    sq_json_key_int(j, "gauss_bonnet_index", m->periodic_index);
+    sq_json_key_int(j, "gauss_bonnet_min_irregular", m->periodic_index < 0 ? -m->periodic_index
+                                                                             : m->periodic_index);
+    sq_json_key_int(j, "irregular_interior_vertices", m->periodic_irregular);
+    sq_json_key_int(j, "mesh_index", m->periodic_mesh_index);
+    sq_json_end_object(j);
+}
+
 void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, int face,
                           const sq_face_info *info, const sq_road_choice *road,
                           const sq_layout_result *r, const sq_quad_mesh *m,
@@ -126,6 +162,7 @@ void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, i
     sq_json_end_object(&j);
     json_groups(&j, m);
     json_sizes(&j, sz ? sz->report : NULL, sz ? sz->far : 0.0);
+    json_periodic(&j, m);
     sq_json_key(&j, "timings_s");
     sq_json_begin_object(&j);
     sq_json_key_number(&j, "read", t->read);

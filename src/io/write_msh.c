@@ -26,6 +26,23 @@ sq_status sq_quad_mesh_check(const sq_quad_mesh *m, sq_error *err)
 }
 
 
+/* Periodic links (docs/domains.md): per link the curve entity, its
+ * master's, the 4x4 affine map (row by row) taking the master onto it,
+ * and the node pairs (node, master's node). */
+static void write_periodic(FILE *fp, const sq_quad_mesh *m)
+{
+    if (m->nperiodic == 0) return;
+    fprintf(fp, "$Periodic\n%d\n", m->nperiodic);
+    for (int l = 0; l < m->nperiodic; l++) {
+        const sq_quad_periodic *p = &m->periodic[l];
+        const double *T = p->affine;
+        fprintf(fp, "1 %d %d\n16 %.17g %.17g 0 %.17g %.17g %.17g 0 %.17g 0 0 1 0 0 0 0 1\n%d\n",
+                p->tag + 1, p->master + 1, T[0], T[1], T[2], T[3], T[4], T[5], p->nnodes);
+        for (int k = 0; k < p->nnodes; k++) fprintf(fp, "%d %d\n", p->node[k] + 1, p->master_node[k] + 1);
+    }
+    fputs("$EndPeriodic\n", fp);
+}
+
 sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, const sq_progress *progress,
                        sq_error *err)
 {
@@ -140,6 +157,7 @@ sq_status sq_write_msh(const char *path, const sq_quad_mesh *m0, const sq_progre
         }
     }
     fputs("$EndElements\n", fp);
+    write_periodic(fp, m);
     st = sq_outfile_commit(&f, err);
 done:
     sq_outfile_abort(&f);

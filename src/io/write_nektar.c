@@ -4,6 +4,7 @@
 #include "write_msh.h"
 
 #include <stdlib.h>
+#include <string.h>
 
 typedef struct {
     unsigned long long key; /* lower corner << 32 | higher corner */
@@ -37,6 +38,36 @@ static int cmp_int(const void *a, const void *b)
 {
     int x = *(const int *)a, y = *(const int *)b;
     return (x > y) - (x < y);
+}
+
+/* Periodic sides (docs/domains.md): the links of one transform (a chain)
+ * give two composites, their masters' edges and theirs, numbered after the
+ * curves' and the faces', for a <P> boundary condition each. */
+static void periodic_composites(FILE *fp, const sq_quad_mesh *m, const int *edge_of, int *list)
+{
+    int id = m->ntags + 1 + m->nregions, chain = 0;
+    for (int l = 0; l < m->nperiodic; l++) {
+        int first = 1;
+        for (int k = 0; k < l; k++)
+            first &= memcmp(m->periodic[k].affine, m->periodic[l].affine, sizeof m->periodic[l].affine) != 0;
+        if (!first) continue;
+        for (int side = 0; side < 2; side++) {
+            int n = 0;
+            for (int k = l; k < m->nperiodic; k++) {
+                const sq_quad_periodic *p = &m->periodic[k];
+                if (memcmp(p->affine, m->periodic[l].affine, sizeof p->affine)) continue;
+                for (int s = 0; s < m->nbnd; s++)
+                    if (m->bnd_tag[s] == (side ? p->tag : p->master))
+                        list[n++] = edge_of[4 * m->bnd_quad[s] + m->bnd_side[s]];
+            }
+            qsort(list, (size_t)n, sizeof *list, cmp_int);
+            fprintf(fp, "      <C ID=\"%d\" NAME=\"periodic_%d_%s\"> E[", id++, chain,
+                    side ? "image" : "master");
+            write_ranges(fp, list, n);
+            fputs("] </C>\n", fp);
+        }
+        chain++;
+    }
 }
 
 sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_progress *progress,
@@ -172,6 +203,7 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_prog
         write_ranges(fp, list, n);
         fputs("] </C>\n", fp);
     }
+    periodic_composites(fp, m, edge_of, list);
     if (m->nregions > 1)
         fprintf(fp, "    </COMPOSITE>\n    <DOMAIN> C[%d-%d] </DOMAIN>\n", m->ntags + 1,
                 m->ntags + m->nregions);

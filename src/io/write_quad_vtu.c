@@ -15,6 +15,28 @@ static void cell_array(FILE *fp, const char *name, const double *v, int n)
     fputs("</DataArray>\n", fp);
 }
 
+/* Periodic links (docs/domains.md): point data naming each linked node's
+ * partner (0-based, the node it is the image of, or its image), -1 for
+ * the others; a node of several links names its first. */
+static sq_status point_partners(FILE *fp, const sq_quad_mesh *m, sq_error *err)
+{
+    if (m->nperiodic == 0) return SQ_OK;
+    int *partner = malloc(sizeof(int) * ((size_t)m->nnodes + 1));
+    if (!partner) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int v = 0; v < m->nnodes; v++) partner[v] = -1;
+    for (int l = 0; l < m->nperiodic; l++)
+        for (int k = 0; k < m->periodic[l].nnodes; k++) {
+            int a = m->periodic[l].master_node[k], b = m->periodic[l].node[k];
+            if (partner[b] < 0) partner[b] = a;
+            if (partner[a] < 0) partner[a] = b;
+        }
+    fputs("<PointData>\n<DataArray type=\"Int64\" Name=\"periodic_partner\" format=\"ascii\">\n", fp);
+    for (int v = 0; v < m->nnodes; v++) fprintf(fp, "%d\n", partner[v]);
+    fputs("</DataArray>\n</PointData>\n", fp);
+    free(partner);
+    return SQ_OK;
+}
+
 sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m0, const sq_progress *progress,
                             sq_error *err)
 {
@@ -64,7 +86,10 @@ sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m0, const sq_p
     for (int q = 0; q < nq; q++) fprintf(fp, "%ld\n", (long)npe * (q + 1));
     fputs("</DataArray>\n<DataArray type=\"UInt8\" Name=\"types\" format=\"ascii\">\n", fp);
     for (int q = 0; q < nq; q++) fprintf(fp, "%d\n", VTK_LAGRANGE_QUADRILATERAL);
-    fputs("</DataArray>\n</Cells>\n<CellData Scalars=\"eta\">\n", fp);
+    fputs("</DataArray>\n</Cells>\n", fp);
+    st = point_partners(fp, m, err);
+    if (st != SQ_OK) goto done;
+    fputs("<CellData Scalars=\"eta\">\n", fp);
     cell_array(fp, "eta", eta, nq);
     cell_array(fp, "eta_curved", etac, nq);
     cell_array(fp, "scaled_jacobian", sj, nq);

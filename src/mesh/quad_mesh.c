@@ -55,6 +55,7 @@ void sq_quad_mesh_free(sq_quad_mesh **mp)
     free(m->tag_name);
     free(m->region);
     free(m->region_face);
+    sq_quad_mesh_free_periodic(m);
     free(m);
     *mp = NULL;
 }
@@ -161,6 +162,11 @@ sq_status sq_quad_mesh_resample(const sq_quad_mesh *m, sq_node_kind nodes, sq_qu
         memcpy(r->region, m->region, (size_t)m->nquads * sizeof *r->region);
         memcpy(r->region_face, m->region_face, (size_t)m->nregions * sizeof *r->region_face);
     }
+    sq_status st = sq_quad_mesh_copy_periodic(r, m, err);
+    if (st != SQ_OK) {
+        sq_quad_mesh_free(&r);
+        return st;
+    }
     /* Unused nodes keep their position. */
     memcpy(r->xy, m->xy, 2 * (size_t)m->nnodes * sizeof *r->xy);
     if (nodes == m->nodes) {
@@ -184,6 +190,9 @@ sq_status sq_quad_mesh_resample(const sq_quad_mesh *m, sq_node_kind nodes, sq_qu
                 r->xy[2 * (size_t)g + 1] = x[1];
             }
     }
+    /* a periodic curve's nodes: its master's images again, not its own
+     * interpolant's (equal to rounding) */
+    sq_quad_mesh_apply_periodic(r);
     *out = r;
     return SQ_OK;
 }

@@ -18,6 +18,16 @@
 
 typedef enum { SQ_NODES_GLL = 0, SQ_NODES_EQUISPACED = 1 } sq_node_kind;
 
+/* A periodic link (docs/domains.md): the nodes of curve `tag` are the
+ * images of curve `master`'s under one rigid motion, node[k] =
+ * T(master_node[k]) exactly (sq_quad_mesh_apply_periodic). */
+typedef struct {
+    int tag, master;   /* boundary tags (CAD edges) */
+    double affine[6];  /* T(x, y) = (a0 x + a1 y + a2, a3 x + a4 y + a5) */
+    int nnodes;
+    int *node, *master_node;
+} sq_quad_periodic;
+
 typedef struct {
     int order;           /* Q, 1..10 */
     sq_node_kind nodes;  /* placement of the nodes along each element side */
@@ -38,7 +48,22 @@ typedef struct {
     int nregions;
     int *region;
     int *region_face;
+    /* periodic pairs (quad_periodic.c): nperiodic links; the identified
+     * domain's Euler characteristic, the net index sum (4 - valence) its
+     * interior vertices need by Gauss–Bonnet, and this mesh's irregular
+     * vertices in it and their net index */
+    int nperiodic;
+    sq_quad_periodic *periodic;
+    int periodic_chi, periodic_index, periodic_irregular, periodic_mesh_index;
 } sq_quad_mesh;
+
+/* Periodic links (quad_periodic.c): every link's nodes set to the images
+ * of its master's; dst's links a copy of src's (same node numbering);
+ * link appended (its arrays taken); all freed. */
+void sq_quad_mesh_apply_periodic(sq_quad_mesh *m);
+sq_status sq_quad_mesh_copy_periodic(sq_quad_mesh *dst, const sq_quad_mesh *src, sq_error *err);
+sq_status sq_quad_mesh_add_periodic(sq_quad_mesh *m, const sq_quad_periodic *link, sq_error *err);
+void sq_quad_mesh_free_periodic(sq_quad_mesh *m);
 
 /* Named boundaries (docs/formats.md): the group of curve t, the least
  * tag with its name (t itself when unnamed), and its name, buf

@@ -1,0 +1,84 @@
+/* semquad — periodic boundaries of a face (`--periodic`, docs/domains.md).
+ *
+ * design:
+ *  1. pairs: edge a of the face and edge b are periodic under a proper
+ *     rigid motion T (a translation, or a rotation about a point) when
+ *     their lengths agree and T(a at arc s) = b at arc L - s for nine
+ *     points s = 0, L/8, ..., L, within the tolerance (a sense of travel
+ *     reversed: the face lies on opposite sides of the two curves, so that
+ *     T(face) is the next passage, not the face again).  T comes from the
+ *     end points, the angle between the chords; under SQ_PERIODIC_REL_TOL
+ *     of turning it is a translation.  `auto` groups the matching pairs by
+ *     transform (a chain of edges is a group: the cascade's periodic lines
+ *     of four segments each) and takes the group of the most matched
+ *     length (ties: every disjoint group as long, the doubly periodic box);
+ *     the others are candidates, reported, for `A:B` to take.  `A:B` pairs
+ *     are checked the same way: a pair that does not match is refused
+ *     (SQ_ERR_PERIODIC);
+ *  2. meshing: the face as a domain of one face whose interfaces are the
+ *     pairs (sq_periodic_domain: the split road's exchange of vertices,
+ *     domain.h design 2, maps b's arc lengths to a's), or the layout road
+ *     where its vertices happen to agree; either way the nodes of b are then
+ *     set to the images of a's (sq_periodic_link), so they coincide to one
+ *     rounding of T;
+ *  3. the identified domain (sq_periodic_identified): Euler characteristic
+ *     and the net index its interior vertices must carry (Gauss–Bonnet). */
+#ifndef SQ_PERIODIC_H
+#define SQ_PERIODIC_H
+
+#include "domain.h"
+#include "face_info.h"
+#include "quad_mesh.h"
+
+/* tolerance of design 1, relative to the face's bounding-box diagonal */
+#define SQ_PERIODIC_REL_TOL 1e-6
+
+typedef struct {
+    int a, b;          /* edges: b's points are T(a's), senses opposite */
+    int group;         /* pairs of one transform (a chain) share it */
+    int rotation;      /* 0: a translation */
+    double affine[6];  /* T(x, y) = (a0 x + a1 y + a2, a3 x + a4 y + a5) */
+    double shift[2];   /* translation: T(p) - p */
+    double centre[2];  /* rotation: its centre and angle (degrees, counter-clockwise) */
+    double angle_deg;
+    double gap;        /* largest |T(a) - b| over the checked points */
+} sq_periodic_pair;
+
+typedef struct {
+    int npairs, ncandidates;
+    sq_periodic_pair *pairs;      /* taken */
+    sq_periodic_pair *candidates; /* `auto`: matched pairs of other transforms, not taken */
+    double tol;                   /* of design 1, file unit */
+} sq_periodic;
+
+/* Design 1: spec "auto" or "A:B[,C:D...]" (edge indices). SQ_ERR_USAGE for a
+ * bad spec, SQ_ERR_PERIODIC for named edges that do not match or `auto`
+ * finding none. */
+sq_status sq_periodic_find(const cad_face *face, const sq_face_info *info, const char *spec,
+                           sq_periodic *p, sq_error *err);
+void sq_periodic_free(sq_periodic *p); /* frees, zeroes */
+
+/* held[e] = 1 for the edges of a pair (ne entries). */
+void sq_periodic_held(const sq_periodic *p, int *held, int ne);
+
+/* Design 2: the face as a one-face domain (domain.h) whose interfaces are
+ * the pairs, for sq_domain_mesh_split; free with sq_domain_free. */
+sq_status sq_periodic_domain(const cad_face *const *face, const sq_face_info *info,
+                             const sq_periodic *p, sq_domain *d, sq_error *err);
+
+/* Design 2: m's nodes on each pair's b set to T(their partner on a), the
+ * links kept in m->periodic; SQ_ERR_LAYOUT if the two sides' nodes do not
+ * correspond one to one within 1e-6 of size (a layout that does not agree). */
+sq_status sq_periodic_link(const sq_periodic *p, sq_quad_mesh *m, double size, sq_error *err);
+
+/* Design 3: chi of the identified domain; *index: the net sum of
+ * (4 - valence) over its interior vertices that Gauss–Bonnet requires when
+ * every boundary vertex has its ideal valence (then at least |index|
+ * vertices of valence 3 or 5); *irregular and *mesh_index: m's interior
+ * vertices of the identified domain (a pair's partners one vertex, its
+ * valence the quads around both) with valence != 4, and their net index. */
+sq_status sq_periodic_identified(const sq_face_info *info, const sq_periodic *p,
+                                 const sq_quad_mesh *m, int *chi, int *index, int *irregular,
+                                 int *mesh_index, sq_error *err);
+
+#endif

@@ -1,0 +1,199 @@
+#!/usr/bin/python3
+"""t629: periodic boundaries (`semquad mesh --periodic`, docs/domains.md).
+
+Two faces built here: the project's own T106-like cascade passage
+(tests/cascade_aerofoil.py: periodic lines of four segments one pitch,
+0.8, apart) and 1/8 of the ring 0.5 <= r <= 1 (tests/domain_faces.py
+sector: its radial sides periodic under the rotation by 45 deg about the
+origin), and examples/square.step, periodic both ways (a torus); with
+$SEMQUAD_REAL_GEOMETRIES, NekMesh's real T106 file too (pitch 0.798).  Each meshed with `--periodic auto` at order 6, then:
+
+  - the pairs found are the expected edges under the expected transform;
+  - Gmsh's reader loads the MSH file with its $Periodic section and
+    getPeriodicNodes gives, for every image curve, its master curve, the
+    affine map of the report and node pairs with |T(x_master) - x| <= 1e-12
+    of the face's size.  Why 1e-12: the image nodes are the master nodes
+    mapped by one affine map (one multiply-add per coordinate, then the
+    17-digit decimal written and read back): a few roundings of numbers of
+    the face's size, 1e-16 relative each; 1e-12 leaves room but would catch
+    nodes placed on the partner curve by its own arc length (the CAD
+    curves match to the file's accuracy, 1e-13 to 1e-7);
+  - both curves of a pair carry the same nodes count (the pairs are one to
+    one and cover the image curve's line elements' nodes);
+  - every quad valid (the report's Bezier bound: inverted 0, min scaled
+    Jacobian > 0);
+  - the identified domain: Euler characteristic (passage with a blade, its
+    periodic lines glued: -1; the sector glued: a ring, 0; the square: a
+    torus, 0), the net index its interior vertices need by Gauss-Bonnet
+    (-4, 0 and 0: the corners merge in pairs to straight angles, the kinks
+    and the square's four corners to full turns), and the mesh's
+    irregular vertices there at least that many; the sector, whose single
+    layout patch puts the same nodes on both radial sides, on the layout
+    road with no irregular vertex at all, as the square;
+  - Nektar++ XML: one composite per periodic side, both with as many edges;
+  - `--periodic 0:1` on the cascade (lengths 1.67 and 0.4) exits 9 with
+    one line on stderr and writes nothing.
+usage: t629-periodic.py SEMQUAD DOMAIN_FACES_PY CASCADE_STEP"""
+import json
+import math
+import os
+import re
+import subprocess
+import sys
+import tempfile
+
+try:
+    import gmsh
+except ImportError:
+    sys.exit(77)
+
+SQ, GEN, CASCADE = sys.argv[1], sys.argv[2], sys.argv[3]
+fails = []
+
+
+def run_mesh(step, out, rep, extra=()):
+    return subprocess.run([SQ, "mesh", step, "--periodic", "auto", "--order", "6", "-o", out,
+                           "--report", rep, "-q"] + list(extra), capture_output=True, text=True)
+
+
+def gmsh_pairs(msh, size):
+    """{image curve: (master curve, affine 4x4 rows, largest gap, pairs, nodes on the curve)}"""
+    gmsh.initialize(["-v", "0"])
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.open(msh)
+    tags, xyz, _ = gmsh.model.mesh.getNodes()
+    pos = {t: (xyz[3 * k], xyz[3 * k + 1]) for k, t in enumerate(tags)}
+    out = {}
+    for dim, tag in gmsh.model.getEntities(1):
+        master, nodes, mnodes, aff = gmsh.model.mesh.getPeriodicNodes(dim, tag)
+        if master == tag or len(nodes) == 0:
+            continue
+        gap = 0.0
+        for n, m in zip(nodes, mnodes):
+            x, y = pos[m]
+            tx = aff[0] * x + aff[1] * y + aff[3]
+            ty = aff[4] * x + aff[5] * y + aff[7]
+            gap = max(gap, math.hypot(tx - pos[n][0], ty - pos[n][1]))
+        on_curve = set()
+        for _, _, enodes in zip(*gmsh.model.mesh.getElements(1, tag)):
+            on_curve.update(enodes)
+        out[tag - 1] = (master - 1, list(aff), gap / size, len(nodes), len(on_curve))
+    gmsh.finalize()
+    return out
+
+
+def check(name, step, expect, tmp):
+    """expect: pairs {(master, image)}, kind, transform check, chi, index,
+    layout (1: layout road with no irregular vertex)"""
+    msh, rep, xml = (os.path.join(tmp, name + e) for e in (".msh", ".json", ".xml"))
+    r = run_mesh(step, msh, rep)
+    if r.returncode != 0:
+        fails.append("%s: exit %d: %s" % (name, r.returncode, r.stderr.strip()))
+        return
+    report = json.load(open(rep))
+    per, mesh = report["periodic"], report["mesh"]
+    got = {tuple(p["edges"]) for p in per["pairs"]}
+    if got != expect["pairs"]:
+        fails.append("%s: pairs %s, expected %s" % (name, sorted(got), sorted(expect["pairs"])))
+    for p in per["pairs"]:
+        if p["kind"] != expect["kind"] or not expect["transform"](p["affine"]):
+            fails.append("%s: pair %s: %s %s" % (name, p["edges"], p["kind"], p["affine"]))
+    bb = [float(v) for v in re.findall(r"[-0-9.e]+", subprocess.run(
+        [SQ, "info", step], capture_output=True, text=True).stdout.split("bbox")[1].split("\n")[0])]
+    size = math.hypot(bb[1] - bb[0], bb[3] - bb[2])
+    links = gmsh_pairs(msh, size)
+    for p in per["pairs"]:
+        master, image = p["edges"]
+        if image not in links:
+            fails.append("%s: Gmsh reads no periodic link for curve %d" % (name, image + 1))
+            continue
+        lm, aff, gap, npairs, ncurve = links[image]
+        a = p["affine"]
+        # the report prints 15 digits, the MSH file 17
+        if lm != master or max(abs(u - v) for u, v in
+                               zip((aff[0], aff[1], aff[3], aff[4], aff[5], aff[7]), a)) > 1e-13 * size:
+            fails.append("%s: Gmsh's link of curve %d: master %d, affine %s" % (name, image, lm, aff))
+        if gap > 1e-12:
+            fails.append("%s: curve %d: nodes %.3g of the size from their master's images"
+                         % (name, image, gap))
+        if npairs != ncurve or npairs != p["nodes"]:
+            fails.append("%s: curve %d: %d pairs, %d nodes on the curve, report %d"
+                         % (name, image, npairs, ncurve, p["nodes"]))
+    if mesh["inverted"] != 0 or not mesh["min_scaled_jacobian"] > 0:
+        fails.append("%s: %d quads not valid" % (name, mesh["inverted"]))
+    if (per["identified_chi"], per["gauss_bonnet_index"]) != (expect["chi"], expect["index"]):
+        fails.append("%s: identified chi %d, index %d; expected %d, %d" % (
+            name, per["identified_chi"], per["gauss_bonnet_index"], expect["chi"], expect["index"]))
+    if per["irregular_interior_vertices"] < abs(per["gauss_bonnet_index"]):
+        fails.append("%s: %d irregular vertices, fewer than Gauss-Bonnet's %d" % (
+            name, per["irregular_interior_vertices"], abs(per["gauss_bonnet_index"])))
+    if expect["layout"] and (report["road"] != "layout" or per["irregular_interior_vertices"]):
+        fails.append("%s: road %s, %d irregular" % (name, report["road"],
+                                                     per["irregular_interior_vertices"]))
+    r = subprocess.run([SQ, "mesh", step, "--periodic", "auto", "--order", "6", "-o", xml, "-q"],
+                       capture_output=True, text=True)
+    comp = dict(re.findall(r'NAME="(periodic_0_\w+)"> E\[([^\]]*)\]', open(xml).read())
+                if r.returncode == 0 else [])
+
+    def count(ranges):
+        return sum(int(b) - int(a) + 1 if b else 1
+                   for a, b in re.findall(r"(\d+)(?:-(\d+))?", ranges))
+
+    if set(comp) != {"periodic_0_master", "periodic_0_image"} or \
+            count(comp["periodic_0_master"]) != count(comp["periodic_0_image"]):
+        fails.append("%s: Nektar++ periodic composites %s" % (name, comp))
+    print("%s: %d pairs, %d quads, road %s, %d irregular (Gauss-Bonnet: %d), min sJ %.3f" % (
+        name, len(got), mesh["quads"], report["road"], per["irregular_interior_vertices"],
+        abs(per["gauss_bonnet_index"]), mesh["min_scaled_jacobian"]))
+
+
+def translation(dx, dy):
+    return lambda a: (a[0], a[1], a[3], a[4]) == (1, 0, 0, 1) and \
+        abs(a[2] - dx) < 1e-9 and abs(a[5] - dy) < 1e-9
+
+
+def rotation(deg):
+    c, s = math.cos(math.radians(deg)), math.sin(math.radians(deg))
+    # the centre, the origin, within the STEP file's 1e-13 accuracy
+    return lambda a: max(abs(a[0] - c), abs(a[1] + s), abs(a[3] - s), abs(a[4] - c),
+                         abs(a[2]), abs(a[5])) < 1e-9
+
+
+def refusal(tmp):
+    out = os.path.join(tmp, "refused.msh")
+    r = subprocess.run([SQ, "mesh", CASCADE, "--periodic", "0:1", "-o", out, "-q"],
+                       capture_output=True, text=True)
+    lines = r.stderr.strip().splitlines()
+    if r.returncode != 9 or len(lines) != 1 or os.path.exists(out):
+        fails.append("--periodic 0:1: exit %d, %d lines, output %s" % (
+            r.returncode, len(lines), os.path.exists(out)))
+
+
+def main():
+    with tempfile.TemporaryDirectory() as tmp:
+        check("cascade", CASCADE, {"pairs": {(0, 8), (1, 7), (2, 6), (3, 5)}, "kind": "translation",
+                                   "transform": translation(0, 0.8), "chi": -1, "index": -4,
+                                   "layout": 0}, tmp)
+        sector = os.path.join(tmp, "sector.step")
+        subprocess.run([sys.executable, GEN, "sector", sector], check=True, capture_output=True)
+        check("sector", sector, {"pairs": {(0, 2)}, "kind": "rotation", "transform": rotation(45),
+                                 "chi": 0, "index": 0, "layout": 1}, tmp)
+        square = os.path.join(os.environ.get("SQ_EXAMPLES", "examples"), "square.step")
+        check("square", square, {"pairs": {(0, 2), (1, 3)}, "kind": "translation",
+                                 "transform": lambda a: translation(0, 1)(a) or
+                                 translation(-1, 0)(a), "chi": 0, "index": 0, "layout": 1}, tmp)
+        refusal(tmp)
+        real = os.path.join(os.environ.get("SEMQUAD_REAL_GEOMETRIES", ""), "real_t106_cascade.step")
+        if os.environ.get("SEMQUAD_REAL_GEOMETRIES") and os.path.exists(real):
+            check("real_t106", real, {"pairs": {(0, 2), (7, 5), (8, 4), (9, 3)},
+                                      "kind": "translation", "transform": translation(0, -0.798),
+                                      "chi": -1, "index": -4, "layout": 0}, tmp)
+        else:
+            print("real_t106_cascade.step: not found (SEMQUAD_REAL_GEOMETRIES); skipped")
+    for f in fails:
+        print("FAIL", f)
+    sys.exit(1 if fails else 0)
+
+
+if __name__ == "__main__":
+    main()
