@@ -24,7 +24,7 @@ struct sq_relax_work {
     int *start; /* nv+1: CSR of the quads around each vertex */
     int *around;
     long *bptr, *brow; /* the Hessian's block pattern (sparse.h): moving
-                        * vertices that share a quad */
+                        * vertices that share a quad; freed once A is made */
     int32_t *pos;      /* 24 per quad corner: where the blocks of its vertex
                         * pairs (0,0) (0,1) (0,2) (1,1) (1,2) (2,2) are summed
                         * in the Hessian's values (sem_sparse_block_positions);
