@@ -512,20 +512,21 @@ void sq_mesh_frame(const sq_mesh *m, double origin[3], double xdir[3], double yd
 typedef sq_status (*mesh_writer)(const char *path, const sq_quad_mesh *m,
                                  const sq_progress *progress, sq_error *err);
 static const struct {
-    const char *ext;
+    const char *name, *ext;
     mesh_writer write;
-} mesh_formats[] = {{".msh", sq_write_msh},
-                    {".xml", sq_write_nektar},
-                    {".vtu", sq_write_quad_vtu},
-                    {".svg", sq_write_quad_svg}};
+} mesh_formats[] = {{"msh", ".msh", sq_write_msh},
+                    {"xml", ".xml", sq_write_nektar},
+                    {"vtu", ".vtu", sq_write_quad_vtu},
+                    {"svg", ".svg", sq_write_quad_svg},
+                    {"msh-binary", NULL, sq_write_msh_binary}};
 
-/* The writer of format ("msh", "xml", ...), or of path's extension when
- * format is NULL. */
+/* The writer of format ("msh", "xml", ..., "msh-binary"), or of path's
+ * extension when format is NULL (binary only by its name). */
 static mesh_writer writer_of(const char *path, const char *format)
 {
     for (size_t k = 0; k < sizeof mesh_formats / sizeof *mesh_formats; k++) {
         const char *ext = mesh_formats[k].ext;
-        if (format ? !strcmp(format, ext + 1) : sq_api_ends_with(path, ext))
+        if (format ? !strcmp(format, mesh_formats[k].name) : ext && sq_api_ends_with(path, ext))
             return mesh_formats[k].write;
     }
     return NULL;
@@ -543,7 +544,7 @@ sq_status sq_mesh_write_format(const sq_mesh *m, const char *path, const char *f
 {
     mesh_writer write = writer_of(path, format);
     if (!write && format)
-        return SQ_FAIL(err, SQ_ERR_USAGE, "unknown mesh format '%s' (use msh, xml or vtu)", format);
+        return SQ_FAIL(err, SQ_ERR_USAGE, "unknown mesh format '%s' (use msh, msh-binary, xml or vtu)", format);
     if (!write)
         return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)", path);
     double t = sq_now();

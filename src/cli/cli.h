@@ -35,6 +35,7 @@ typedef struct {
     const char *report;    /* --report F */
     const char *csv;       /* converge --csv F */
     const char *format;    /* mesh --format msh|xml|vtu */
+    int binary;            /* mesh --binary: MSH 4.1 binary */
     const char *deprecated; /* the deprecated spelling used, warned about once */
     const char *progress;  /* --progress auto|json|none */
     sq_cli_progress bar;   /* its state (opt.progress_data and opt.log_data point here) */
@@ -225,6 +226,9 @@ void sq_cli_progress_clear(sq_cli_progress *p);
  * SQ_ERR_QUALITY if a file's worst quad is below the floor (after writing
  * them all). sq_cli_family_faces refuses a family of several faces before
  * meshing. */
+/* The format sq_mesh_write_format gets for mesh's file: --format's (NULL:
+ * by the extension), "msh-binary" with --binary (cmd_mesh.c). */
+const char *sq_cli_mesh_format(const sq_cli_args *a);
 sq_status sq_cli_family_check(sq_cli_args *a, char *manifest, size_t n, sq_error *err);
 sq_status sq_cli_family_faces(const sq_cli_args *a, const sq_model *m, sq_error *err);
 sq_status sq_cli_family_write(const sq_mesh *mesh, const sq_cli_args *a, sq_error *err);

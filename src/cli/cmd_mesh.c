@@ -37,6 +37,10 @@ static sq_status mesh_file(sq_cli_args *a, char *name, size_t n, sq_error *err)
         return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)",
                        a->output);
     if (a->output && !strcmp(a->output, "-") && !a->format) a->format = "msh";
+    const char *ext = a->output ? strrchr(a->output, '.') : NULL;
+    if (a->binary && !a->no_output &&
+        strcmp(a->format ? a->format : a->output ? (ext ? ext + 1 : "") : "msh", "msh"))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--binary writes MSH only: drop it, or write msh");
     if (a->no_output || a->output) return SQ_OK;
     const char *base = strrchr(a->input, '/') ? strrchr(a->input, '/') + 1 : a->input;
     const char *dot = strrchr(base, '.');
@@ -47,12 +51,14 @@ static sq_status mesh_file(sq_cli_args *a, char *name, size_t n, sq_error *err)
     return sq_output_check(name, err);
 }
 
+const char *sq_cli_mesh_format(const sq_cli_args *a) { return a->binary ? "msh-binary" : a->format; }
+
 /* The outputs -o (unless a family replaces it), --svg and --report, in
  * that order (the report's timings include the writes). */
 static sq_status write_outputs(const sq_mesh *mesh, const sq_cli_args *a, int named, int family,
                                sq_error *err)
 {
-    if (a->output && !family) SQ_TRY(sq_mesh_write_format(mesh, a->output, a->format, err));
+    if (a->output && !family) SQ_TRY(sq_mesh_write_format(mesh, a->output, sq_cli_mesh_format(a), err));
     if (a->output && !named && !a->quiet && !family)
         fprintf(stderr, "semquad: note: no -o given: wrote %s\n", a->output);
     if (a->svg) SQ_TRY(sq_mesh_write(mesh, a->svg, err));
@@ -93,6 +99,9 @@ static const sq_cli_opt mesh_opts[] = {
      .target = SQ_CLI_AT(output), .stdout_ok = 1},
     {.name = "format", .kind = SQ_CLI_WORD, .value = "msh|xml|vtu", .def = "-o's extension, else msh",
      .help = "the mesh's format, whatever the file's name", .target = SQ_CLI_AT(format)},
+    {.name = "binary", .kind = SQ_CLI_FLAG, .set = 1, .def = "off (text)",
+     .help = "write the MSH file as binary MSH 4.1 (the same groups, nodes and elements)",
+     .target = SQ_CLI_AT(binary)},
     {.name = "no-output", .kind = SQ_CLI_FLAG, .set = 1, .def = "off",
      .help = "mesh and report, but write no mesh file", .target = SQ_CLI_AT(no_output)},
     {.name = "order", .kind = SQ_CLI_INT, .value = "Q", .lo = 1, .hi = 10, .def = "4",

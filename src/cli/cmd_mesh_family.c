@@ -165,7 +165,7 @@ static sq_status make_family(family *f, const sq_mesh *mesh, const sq_cli_args *
 static sq_status write_family(const family *f, const sq_cli_args *a, sq_error *err)
 {
     for (int k = 0; k < f->n; k++) {
-        SQ_TRY(sq_mesh_write_format(f->mesh[k], f->file[k], a->format, err));
+        SQ_TRY(sq_mesh_write_format(f->mesh[k], f->file[k], sq_cli_mesh_format(a), err));
         char *text = NULL;
         SQ_TRY(sq_mesh_describe(f->mesh[k], &text, err));
         if (!a->quiet) printf("%s: %s", f->file[k], text);

@@ -9,7 +9,9 @@
  * least of them),
  * one surface entity with physical group "domain" (physical tag ntags+1).
  * Node tag = mesh node index + 1, quad element tag = quad index + 1.
- * Format: Gmsh reference manual, "MSH file format version 4.1". */
+ * Format: Gmsh reference manual, "MSH file format version 4.1"; the binary
+ * form ("4.1 1 8") has the same sections with the numbers of $Entities,
+ * $Nodes and $Elements as native ints, size_t and doubles. */
 #ifndef SQ_WRITE_MSH_H
 #define SQ_WRITE_MSH_H
 
@@ -23,6 +25,10 @@
  * boundary lines) written of all, at most about 100 events. */
 sq_status sq_write_msh(const char *path, const sq_quad_mesh *m, const sq_progress *progress,
                        sq_error *err);
+/* The same file in binary MSH 4.1: the same nodes, elements, tags and
+ * groups, coordinates bit for bit. */
+sq_status sq_write_msh_binary(const char *path, const sq_quad_mesh *m,
+                              const sq_progress *progress, sq_error *err);
 
 /* Checks shared by the writers: every node index, boundary quad, side and
  * tag in range. */

@@ -1,5 +1,6 @@
 #include "write_nektar.h"
 
+#include "format_number.h"
 #include "outfile.h"
 #include "write_msh.h"
 
@@ -32,6 +33,22 @@ static void write_ranges(FILE *fp, const int *ids, int n)
         else fprintf(fp, "%d", ids[i]);
         i = k + 1;
     }
+}
+
+/* before, then id and '">' unless id < 0, then "x y 0", then after: one
+ * point of a VERTEX or CURVED entry. */
+static void put_point(FILE *fp, const char *before, int id, const double *xy, const char *after)
+{
+    char line[64 + SQ_XY0_CHARS];
+    size_t n = strlen(before), k = strlen(after);
+    memcpy(line, before, n);
+    if (id >= 0) {
+        n += (size_t)sq_format_long(line + n, id);
+        line[n++] = '"', line[n++] = '>';
+    }
+    n += (size_t)sq_format_xy0(line + n, xy[0], xy[1]);
+    memcpy(line + n, after, k);
+    fwrite(line, 1, n + k, fp);
 }
 
 static int cmp_int(const void *a, const void *b)
@@ -130,8 +147,7 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_prog
           "  <GEOMETRY DIM=\"2\" SPACE=\"2\">\n    <VERTEX>\n", fp);
     for (int v = 0; v < m->nnodes; v++)
         if (vid[v] >= 0)
-            fprintf(fp, "      <V ID=\"%d\">%.17g %.17g 0</V>\n", vid[v], m->xy[2 * v],
-                    m->xy[2 * v + 1]);
+            put_point(fp, "      <V ID=\"", vid[v], &m->xy[2 * v], "</V>\n");
     fputs("    </VERTEX>\n    <EDGE>\n", fp);
     for (int e = 0; e < ne; e++) {
         int q = owner[e] / 4, k = owner[e] % 4;
@@ -156,10 +172,8 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_prog
             const int *c = &m->conn[(size_t)q * npe];
             fprintf(fp, "      <E ID=\"%d\" EDGEID=\"%d\" NUMPOINTS=\"%d\" TYPE=\"%s\">", e, e,
                     Q + 1, ptype);
-            for (int s = 0; s <= Q; s++) {
-                const double *x = &m->xy[2 * (size_t)c[sq_quad_side_node(Q, k, s)]];
-                fprintf(fp, "%s%.17g %.17g 0", s ? " " : "", x[0], x[1]);
-            }
+            for (int s = 0; s <= Q; s++)
+                put_point(fp, s ? " " : "", -1, &m->xy[2 * (size_t)c[sq_quad_side_node(Q, k, s)]], "");
             fputs("</E>\n", fp);
             sq_progress_every(progress, "write", ++done, total);
         }
@@ -167,9 +181,7 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_prog
             const int *c = &m->conn[(size_t)q * npe];
             fprintf(fp, "      <F ID=\"%d\" FACEID=\"%d\" NUMPOINTS=\"%d\" TYPE=\"%s\">", q, q, npe,
                     ptype);
-            for (int n = 0; n < npe; n++)
-                fprintf(fp, "%s%.17g %.17g 0", n ? " " : "", m->xy[2 * (size_t)c[n]],
-                        m->xy[2 * (size_t)c[n] + 1]);
+            for (int n = 0; n < npe; n++) put_point(fp, n ? " " : "", -1, &m->xy[2 * (size_t)c[n]], "");
             fputs("</F>\n", fp);
             sq_progress_every(progress, "write", ++done, total);
         }

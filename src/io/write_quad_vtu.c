@@ -1,5 +1,6 @@
 #include "write_quad_vtu.h"
 
+#include "format_number.h"
 #include "outfile.h"
 #include "quad_order.h"
 #include "write_msh.h"
@@ -70,16 +71,23 @@ sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m0, const sq_p
                 "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
             m->nnodes, nq);
     for (int v = 0; v < m->nnodes; v++) {
-        fprintf(fp, "%.17g %.17g 0\n", m->xy[2 * v], m->xy[2 * v + 1]);
+        char line[SQ_XY0_CHARS + 1];
+        int n = sq_format_xy0(line, m->xy[2 * v], m->xy[2 * v + 1]);
+        line[n++] = '\n';
+        fwrite(line, 1, (size_t)n, fp);
         sq_progress_every(progress, "write", ++done, total);
     }
     fputs("</DataArray>\n</Points>\n<Cells>\n"
           "<DataArray type=\"Int64\" Name=\"connectivity\" format=\"ascii\">\n", fp);
     for (int q = 0; q < nq; q++) {
         const int *c = &m->conn[(size_t)q * npe];
-        for (int k = 0; k < npe; k++)
-            fprintf(fp, "%d%c", c[sq_quad_node(Q, ij[2 * k], ij[2 * k + 1])],
-                    k + 1 < npe ? ' ' : '\n');
+        char line[12 * 121 + 1]; /* up to 121 nodes (order 10) of 11 characters */
+        int n = 0;
+        for (int k = 0; k < npe; k++) {
+            n += sq_format_long(line + n, c[sq_quad_node(Q, ij[2 * k], ij[2 * k + 1])]);
+            line[n++] = k + 1 < npe ? ' ' : '\n';
+        }
+        fwrite(line, 1, (size_t)n, fp);
         sq_progress_every(progress, "write", ++done, total);
     }
     fputs("</DataArray>\n<DataArray type=\"Int64\" Name=\"offsets\" format=\"ascii\">\n", fp);

@@ -30,8 +30,6 @@ void sq_relax_work_free(sq_relax_work **pw)
     free(w->tan);
     free(w->start);
     free(w->around);
-    free(w->bptr);
-    free(w->brow);
     free(w->pos);
     sem_sparse_free(&w->A);
     free(w);
@@ -91,19 +89,27 @@ static void corner_vertices(const sq_relax_mesh *m, int q, int k, int v[3])
 static sq_status create_hessian(const sq_relax_mesh *m, relax_work *w, sq_error *err)
 {
     SQ_TRY(sem_sparse_create_blocks(w->ndof / 2, 2, w->bptr, w->brow, &w->A, err));
-    w->pos = malloc(sizeof(long) * (96 * (size_t)m->nq + 1));
+    w->pos = malloc(sizeof *w->pos * (96 * (size_t)m->nq + 1));
     if (!w->pos) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     for (int q = 0; q < m->nq; q++)
         for (int k = 0; k < 4; k++) {
             int v[3];
             corner_vertices(m, q, k, v);
-            long *pos = &w->pos[24 * (4 * q + k)];
+            int32_t *pos = &w->pos[24 * (4 * q + k)];
             for (int r = 0; r < 3; r++)
                 for (int t = r; t < 3; t++, pos += 4) {
-                    pos[0] = pos[1] = pos[2] = pos[3] = -1;
+                    long p[4] = {-1, -1, -1, -1};
                     if (w->dof[v[r]] >= 0 && w->dof[v[t]] >= 0)
                         SQ_TRY(sem_sparse_block_positions(w->A, w->dof[v[r]] / 2, w->dof[v[t]] / 2,
-                                                          pos, err));
+                                                          p, err));
+                    for (int e = 0; e < 4; e++) {
+                        if (p[e] > INT32_MAX)
+                            return SQ_FAIL(err, SQ_ERR_USAGE,
+                                           "relaxation: the Hessian of %d quads has more than "
+                                           "2^31 entries; mesh fewer quads (--size, --max-quads)",
+                                           m->nq);
+                        pos[e] = (int32_t)p[e];
+                    }
                 }
         }
     return SQ_OK;
@@ -188,6 +194,11 @@ static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_wor
     free(nb);
     if (st == SQ_OK) st = block_pattern(m, w, err);
     if (st == SQ_OK && w->ndof > 0) st = create_hessian(m, w, err);
+    /* the Hessian holds its own copy of the pattern: 128 B a quad less at
+     * the factorization's peak */
+    free(w->bptr);
+    free(w->brow);
+    w->bptr = w->brow = NULL;
     return st;
 }
 
@@ -457,7 +468,7 @@ static sq_status newton_direction(const sq_relax_mesh *m, relax_work *w, int fre
             for (int r = 0; r < 3; r++)
                 moves[r] = vertex_frame(w, v[r], T[r]);
             corner_blocks(He, M);
-            const long *pos = &w->pos[24 * (4 * q + k)];
+            const int32_t *pos = &w->pos[24 * (4 * q + k)];
             for (int r = 0, pr = 0; r < 3; r++)
                 for (int t = r; t < 3; t++, pr++, pos += 4) {
                     if (!moves[r] || !moves[t]) continue;

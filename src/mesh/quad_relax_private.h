@@ -7,6 +7,8 @@
 #include "quad_relax.h"
 #include "sparse.h"
 
+#include <stdint.h>
+
 /* How each vertex moves; kept from one relaxation of a mesh to the next
  * (sq_relax_work). */
 struct sq_relax_work {
@@ -22,10 +24,12 @@ struct sq_relax_work {
     int *start; /* nv+1: CSR of the quads around each vertex */
     int *around;
     long *bptr, *brow; /* the Hessian's block pattern (sparse.h): moving
-                        * vertices that share a quad */
-    long *pos;         /* 24 per quad corner: where the blocks of its vertex
+                        * vertices that share a quad; freed once A is made */
+    int32_t *pos;      /* 24 per quad corner: where the blocks of its vertex
                         * pairs (0,0) (0,1) (0,2) (1,1) (1,2) (2,2) are summed
-                        * in the Hessian's values (sem_sparse_block_positions) */
+                        * in the Hessian's values (sem_sparse_block_positions);
+                        * 32 bits: the largest share of the relaxation's
+                        * memory, and 2^31 values are far beyond --max-quads */
     sem_sparse *A;     /* the Hessian, its analysis and last factorization */
     int factored;      /* A has been factored */
     int steps;         /* the last relaxation's Newton steps */
