@@ -10,7 +10,8 @@ $SEMQUAD_REAL_GEOMETRIES, NekMesh's real T106 file too (pitch 0.798).  Each mesh
 
   - the pairs found are the expected edges under the expected transform;
   - Gmsh's reader loads the MSH file with its $Periodic section and
-    getPeriodicNodes gives, for every image curve, its master curve, the
+    getPeriodicNodes gives (from the text file and from the --binary one
+    alike), for every image curve, its master curve, the
     affine map of the report and node pairs with |T(x_master) - x| <= 1e-12
     of the face's size.  Why 1e-12: the image nodes are the master nodes
     mapped by one affine map (one multiply-add per coordinate, then the
@@ -119,6 +120,12 @@ def check(name, step, expect, tmp):
         if npairs != ncurve or npairs != p["nodes"]:
             fails.append("%s: curve %d: %d pairs, %d nodes on the curve, report %d"
                          % (name, image, npairs, ncurve, p["nodes"]))
+    # the binary file (--binary) holds the same links, read by the same reader
+    binmsh = os.path.join(tmp, name + "_bin.msh")
+    rb = run_mesh(step, binmsh, os.path.join(tmp, name + "_bin.json"), ["--binary"])
+    if rb.returncode != 0 or gmsh_pairs(binmsh, size) != links:
+        fails.append("%s: --binary: exit %d, its periodic links differ from the text file's"
+                     % (name, rb.returncode))
     if mesh["inverted"] != 0 or not mesh["min_scaled_jacobian"] > 0:
         fails.append("%s: %d quads not valid" % (name, mesh["inverted"]))
     if (per["identified_chi"], per["gauss_bonnet_index"]) != (expect["chi"], expect["index"]):
