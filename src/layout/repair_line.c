@@ -138,6 +138,16 @@ static double sep_clearance(const sq_separatrix_set *S, const double x[2], doubl
  * leaving a separatrix grows its step from this by 1.5 per step. */
 #define MIN_STEP_FRACTION 0.02
 
+/* An empty line (open end, no separatrix hit) at p0. */
+static sq_status line_start(lay_line *out, const double p0[2], sq_error *err)
+{
+    memset(out, 0, sizeof *out);
+    out->hit_sep = -1;
+    out->end.kind = SQ_END_OPEN;
+    out->end.id = -1;
+    return line_push(out, p0, err);
+}
+
 /* The first thing segment x-xn (the step of length h after `len` along
  * the line) meets, boundary or separatrix (hits within `skip` of the
  * line's start ignored, on the boundary within `bskip`): if any (*hit), its point is appended to out and
@@ -220,11 +230,7 @@ static sq_status first_hit(lay_repair *r, const double x[2], const double xn[2],
 sq_status lay_trace_line(lay_repair *r, const double p0[2], const double d0[2], double skip,
                          lay_line *out, sq_error *err)
 {
-    memset(out, 0, sizeof *out);
-    out->hit_sep = -1;
-    out->end.kind = SQ_END_OPEN;
-    out->end.id = -1;
-    SQ_TRY(line_push(out, p0, err));
+    SQ_TRY(line_start(out, p0, err));
     double x[2] = {p0[0], p0[1]}, d[2] = {d0[0], d0[1]}, len = 0.0;
     double nd = hypot(d[0], d[1]);
     d[0] /= nd;
@@ -286,11 +292,7 @@ sq_status lay_trace_line(lay_repair *r, const double p0[2], const double d0[2], 
 sq_status lay_ray_line(lay_repair *r, const double p0[2], const double d0[2], double skip,
                        lay_line *out, sq_error *err)
 {
-    memset(out, 0, sizeof *out);
-    out->hit_sep = -1;
-    out->end.kind = SQ_END_OPEN;
-    out->end.id = -1;
-    SQ_TRY(line_push(out, p0, err));
+    SQ_TRY(line_start(out, p0, err));
     /* longer than the face's bounding box: a ray from inside meets its
      * boundary within it */
     double nd = hypot(d0[0], d0[1]), h = 2.0 * r->L->scale;

@@ -222,13 +222,14 @@ static sq_status repair_tjunction(lay_repair *r, int *done, sq_error *err)
             }
         }
         double dir[2] = {-d[stem][0], -d[stem][1]}, p[2] = {L->sing[t].x, L->sing[t].y};
-        /* where the field line runs out of its length or work (a thin
-         * patch's tiny steps, a line circling without meeting anything),
-         * the straight ray: the shortest connection to the opposite side */
+        /* where the field line runs out of its length (a thin patch's
+         * tiny steps, a line circling without meeting anything), the
+         * straight ray: the shortest connection to the opposite side; not
+         * past the repair lines' work bound, which ends the repairs */
         lay_line ln;
         sq_error e2, e3;
         sq_status st = lay_trace_line(r, p, dir, 1e-6 * L->scale, &ln, &e2), st2 = st;
-        if (st == SQ_ERR_LAYOUT) { /* else e2 is the error */
+        if (st == SQ_ERR_LAYOUT && r->lwork <= LINE_WORK_MAX) { /* else e2 is the error */
             free(ln.xy);
             st2 = lay_ray_line(r, p, dir, 1e-6 * L->scale, &ln, &e3);
             if (st2 == SQ_OK) L->stats.straight_stems++;
