@@ -240,7 +240,7 @@ sq_status lay_trace_line(lay_repair *r, const double p0[2], const double d0[2], 
     /* the steps a line of maxlen takes at the default step, four times
      * over: small steps in thin patches may not run it out of time */
     const double budget = r->maxlen / r->step;
-    const double per_step = (double)(r->nb + lay_set_points(S));
+    const double per_step = (double)(r->nb + lay_set_points(S)) + LINE_STEP_WORK;
     for (long nstep = 0; len < r->maxlen && nstep < budget; nstep++) {
         if ((r->lwork += per_step) > LINE_WORK_MAX)
             return SQ_FAIL(err, SQ_ERR_LAYOUT,

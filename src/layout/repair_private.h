@@ -39,6 +39,11 @@ typedef struct {
  * (2026-11-26), the most took 1.3e8 (0100), the examples' 1.3e5 (annulus),
  * T106's none.  A bound on the work, not on the clock, as WORK_MAX. */
 #define LINE_WORK_MAX 2e9
+/* A step's field evaluation (locating the point, the element's Dubiner
+ * modes) in the same unit: about 2 us against 5 ns a segment test.  Without
+ * it a line among few segments ran uncounted (stress corpus 0311: 60 s of
+ * field evaluations within the bound). */
+#define LINE_STEP_WORK 400.0
 
 /* Points of the separatrix set (repair_set.c). */
 long lay_set_points(const sq_separatrix_set *S);
