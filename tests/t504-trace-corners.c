@@ -1,8 +1,11 @@
 /* Separatrices from face vertices taking n >= 2 quads (Marcon 2019 §3.3,
  * Algorithm 1 at boundary vertices): n - 1 rays into the face, between the
  * outgoing and the incoming edge.  lshape's 270-degree corner (1, 1) takes
- * 3 quads: 2 rays continuing its edges, to (0, 1) and (1, 0); polygon's
- * 140.5-degree corner (0.5, 1.8) takes 2: one ray. */
+ * 3 quads: 2 rays continuing its edges, to (0, 1) and (1, 0).  polygon's
+ * 140.5-degree corner (0.5, 1.8) takes 2 quads but, within
+ * SQ_LAYOUT_BEND_TOL_DEG of 180 degrees, is a bend of a patch side: no ray
+ * (the one ray it had ran along an edge on curved faces, stress corpus
+ * 0035), and polygon has no singular point: no separatrix at all. */
 #include "t50x_trace.h"
 
 static double mod2pi(double a)
@@ -78,9 +81,8 @@ int main(void)
     if (k < 0) return 1;
     fails += sq_check_int("polygon", "quads at (0.5,1.8)", c.quads[k], 2);
     SQ_TEST_OK(sq_trace_separatrices(&c.cf, c.face, &c.a.info, c.quads, c.a.npoints, c.sing, &opt, &set, &err), err);
-    fails += check_corner("polygon", &c, &set, k, 1);
-    fails += sq_check_int("polygon", "separatrices", set.n, 1 + 0 * c.a.npoints);
-    fails += t5_check_ends("polygon", &c, &set, 40.0);
+    fails += check_corner("polygon", &c, &set, k, 0);
+    fails += sq_check_int("polygon", "separatrices", set.n, 0);
     sq_separatrix_set_free(&set);
     t5_close(&c);
     return fails != 0;

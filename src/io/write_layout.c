@@ -92,6 +92,8 @@ static void json_layout_keys(sq_json *j, const sq_layout_result *r)
     sq_json_key_int(j, "annuli_cut", s->annuli_cut);
     sq_json_key_int(j, "duplicates_removed", s->duplicates_removed);
     sq_json_key_int(j, "crossings_split", s->crossings_split);
+    sq_json_key_int(j, "straight_stems", s->straight_stems);
+    sq_json_key_int(j, "separatrices_removed", s->separatrices_removed);
     sq_json_key_int(j, "iterations", s->iterations);
     /* the pattern's route (layout_pipeline.h, docs/layout.md) */
     const sq_layout_report *rep = &r->report;
@@ -244,7 +246,9 @@ sq_status sq_write_layout_svg(const char *path, const sq_layout_result *r, sq_er
                {st->valence2_split, "valence-2 points split"},
                {st->annuli_cut, "annuli cut"},
                {st->duplicates_removed, "duplicates"},
-               {st->crossings_split, "crossings"}};
+               {st->crossings_split, "crossings"},
+               {st->straight_stems, "straight stems"},
+               {st->separatrices_removed, "separatrices removed"}};
     char caption[320];
     int len = snprintf(
         caption, sizeof caption,

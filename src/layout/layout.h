@@ -57,6 +57,11 @@
 
 /* Interior angles within this of π are not corners (degrees). */
 #define SQ_LAYOUT_CORNER_TOL_DEG 30.0
+/* A face vertex taking 2 quads (the field's rounding of angle / 90 deg: an
+ * angle in about 135-225 deg) within this of π starts no separatrix and is
+ * no patch corner: a bend of a patch side with two quads at it, as a smooth
+ * junction (degrees; trace.c, layout_patches.c). */
+#define SQ_LAYOUT_BEND_TOL_DEG 45.0
 
 typedef enum {
     SQ_LNODE_CORNER = 0, /* face vertex `id` (sq_face_info.vertices) */
@@ -131,6 +136,9 @@ typedef struct {
                             divisions only */
     int extra_separatrices; /* traced from a corner of a pentagon or hexagon */
     int polygons_split;  /* n-quad splits of patches with n != 3, 4 corners */
+    int separatrices_removed; /* bounding slivers or triangles (repair_remove.c) */
+    int straight_stems;  /* T-junction stems continued by a straight ray where
+                            the field line found no end */
     int iterations;      /* correction passes */
 } sq_layout_stats;
 

@@ -255,6 +255,43 @@ static sq_status assign_holes(const pstate *g, const int *cyc, const cycinfo *ci
     return st;
 }
 
+/* Is every sector at node v a patch corner, whatever its angle?  At a
+ * singular point, a face vertex or a foot where separatrices meet (degree
+ * >= 3) the sectors are the patches' corners by construction: a singular
+ * point of valence V is a corner of V patches, a vertex taking q quads of q,
+ * a foot of n separatrices of n + 1 (layout_check.c).  Read by angle, a
+ * sector within SQ_LAYOUT_CORNER_TOL_DEG of 180 deg there (a separatrix
+ * leaving a singular point or meeting the boundary at a shallow angle) made
+ * a patch of 3 corners and a node of the wrong corner count that no repair
+ * could mend: it is a quad corner of a wide angle, its Jacobian positive.
+ * The nodes the repairs insert keep the angle rule: a T-junction is a
+ * defect, and a midpoint whose spoke leaves at 180 deg a failed split (a
+ * needle's centroid: its quads would be wedges). */
+static int sector_is_corner(const sq_layout *L, int v)
+{
+    const sq_layout_node *n = &L->nodes[v];
+    if (n->degree < 3) return 0;
+    switch (n->kind) {
+    case SQ_LNODE_SINGULAR:
+        return L->role[n->id] == SQ_LROLE_INPUT;
+    case SQ_LNODE_CORNER:
+    case SQ_LNODE_FOOT:
+        return 1;
+    default:
+        return 0;
+    }
+}
+
+/* Is node v a bend of a patch side: a face vertex taking 2 quads with no
+ * separatrix at it, its angle within SQ_LAYOUT_BEND_TOL_DEG of π (trace.c
+ * starts none there; layout_check.c wants it a corner of no patch)? */
+static int is_bend(const sq_layout *L, int v, double ang)
+{
+    const sq_layout_node *n = &L->nodes[v];
+    return n->kind == SQ_LNODE_CORNER && n->degree == 2 && L->vertex_quads[n->id] == 2 &&
+           fabs(ang - M_PI) < SQ_LAYOUT_BEND_TOL_DEG * M_PI / 180.0;
+}
+
 /* Patch p from the cycles it owns: its half-edges (the outer cycle first),
  * area and corners; a quad patch's sides. */
 static sq_status fill_patch(const pstate *g, int p, const int *cyc, const cycinfo *ci, int ncyc,
@@ -302,8 +339,8 @@ static sq_status fill_patch(const pstate *g, int p, const int *cyc, const cycinf
             int hout = 2 * P->half[kn].edge + P->half[kn].reversed;
             double ang = (hin ^ 1) == hout ? 2.0 * M_PI
                                            : wrap2pi(g->dir[hin ^ 1] - g->dir[hout]);
-            if (fabs(ang - M_PI) > tol) {
-                int v = (hout & 1) ? L->edges[hout / 2].n1 : L->edges[hout / 2].n0;
+            int v = (hout & 1) ? L->edges[hout / 2].n1 : L->edges[hout / 2].n0;
+            if ((fabs(ang - M_PI) > tol && !is_bend(L, v, ang)) || sector_is_corner(L, v)) {
                 P->corners[P->ncorners] = v;
                 P->corner_half[P->ncorners] = kn;
                 P->corner_angle[P->ncorners] = ang;

@@ -138,6 +138,91 @@ static double sep_clearance(const sq_separatrix_set *S, const double x[2], doubl
  * leaving a separatrix grows its step from this by 1.5 per step. */
 #define MIN_STEP_FRACTION 0.02
 
+/* An empty line (open end, no separatrix hit) at p0. */
+static sq_status line_start(lay_line *out, const double p0[2], sq_error *err)
+{
+    memset(out, 0, sizeof *out);
+    out->hit_sep = -1;
+    out->end.kind = SQ_END_OPEN;
+    out->end.id = -1;
+    return line_push(out, p0, err);
+}
+
+/* The first thing segment x-xn (the step of length h after `len` along
+ * the line) meets, boundary or separatrix (hits within `skip` of the
+ * line's start ignored, on the boundary within `bskip`): if any (*hit), its point is appended to out and
+ * out's end or hit_sep/hit_pos set. */
+static sq_status first_hit(lay_repair *r, const double x[2], const double xn[2], double len,
+                           double h, double skip, double bskip, lay_line *out, int *hit,
+                           sq_error *err)
+{
+    const sq_separatrix_set *S = &r->L->seps;
+    *hit = 1;
+    /* first thing the step meets: boundary or a separatrix */
+    double tbest = 2.0;
+    int kind = 0, which = -1;
+    double where = 0.0;
+    for (int b = 0; b < r->nb; b++) {
+        const double *q = &r->bxy[4 * b];
+        double t, u;
+        if (!lay_seg_seg(x, xn, q, q + 2, &t, &u)) continue;
+        if (len + t * h <= bskip) continue;
+        if (t < tbest) {
+            tbest = t;
+            kind = 1;
+            which = b;
+            where = u;
+        }
+    }
+    for (int i = 0; i < S->n; i++) {
+        const sq_separatrix *s = &S->s[i];
+        for (int j = 0; j + 1 < s->npts; j++) {
+            double t, u;
+            if (!lay_seg_seg(x, xn, &s->xy[2 * j], &s->xy[2 * j + 2], &t, &u)) continue;
+            if (len + t * h <= skip) continue;
+            if (t < tbest) {
+                tbest = t;
+                kind = 2;
+                which = i;
+                where = j + fmin(fmax(u, 0.0), 1.0);
+            }
+        }
+    }
+    if (kind == 1) {
+        int e = r->bedge[which];
+        double s = r->bs[2 * which] + where * (r->bs[2 * which + 1] - r->bs[2 * which]);
+        double dir[2] = {xn[0] - x[0], xn[1] - x[1]}, p[2];
+        SQ_TRY(boundary_exact(r, e, x, dir, &s, p, err));
+        double L = cad_face_edge_length(r->face, e), snap = 1e-6 * r->L->scale;
+        out->end.kind = SQ_END_BOUNDARY;
+        out->end.id = e;
+        out->end.s = s;
+        for (int v = 0; v < r->info->nvertices; v++) {
+            const sq_vertex *V = &r->info->vertices[v];
+            if ((V->edge_out == e && s <= snap) || (V->edge_in == e && s >= L - snap)) {
+                out->end.kind = SQ_END_CORNER;
+                out->end.id = v;
+                p[0] = V->x;
+                p[1] = V->y;
+            }
+        }
+        return line_push(out, p, err);
+    }
+    if (kind == 2) {
+        const sq_separatrix *s = &S->s[which];
+        int j = (int)floor(where);
+        if (j >= s->npts - 1) j = s->npts - 2;
+        double u = where - j, p[2];
+        p[0] = s->xy[2 * j] + u * (s->xy[2 * j + 2] - s->xy[2 * j]);
+        p[1] = s->xy[2 * j + 1] + u * (s->xy[2 * j + 3] - s->xy[2 * j + 1]);
+        out->hit_sep = which;
+        out->hit_pos = where;
+        return line_push(out, p, err);
+    }
+    *hit = 0;
+    return SQ_OK;
+}
+
 /* Trace a field line from p0 in direction d0 (Heun steps, as Jezdimirović
  * §6.1) until it meets the boundary (end: foot or face vertex) or a
  * separatrix of the layout (hit_sep >= 0 at hit_pos).  Hits within `skip`
@@ -145,11 +230,7 @@ static double sep_clearance(const sq_separatrix_set *S, const double x[2], doubl
 sq_status lay_trace_line(lay_repair *r, const double p0[2], const double d0[2], double skip,
                          lay_line *out, sq_error *err)
 {
-    memset(out, 0, sizeof *out);
-    out->hit_sep = -1;
-    out->end.kind = SQ_END_OPEN;
-    out->end.id = -1;
-    SQ_TRY(line_push(out, p0, err));
+    SQ_TRY(line_start(out, p0, err));
     double x[2] = {p0[0], p0[1]}, d[2] = {d0[0], d0[1]}, len = 0.0;
     double nd = hypot(d[0], d[1]);
     d[0] /= nd;
@@ -159,7 +240,7 @@ sq_status lay_trace_line(lay_repair *r, const double p0[2], const double d0[2], 
     /* the steps a line of maxlen takes at the default step, four times
      * over: small steps in thin patches may not run it out of time */
     const double budget = r->maxlen / r->step;
-    const double per_step = (double)(r->nb + lay_set_points(S));
+    const double per_step = (double)(r->nb + lay_set_points(S)) + LINE_STEP_WORK;
     for (long nstep = 0; len < r->maxlen && nstep < budget; nstep++) {
         if ((r->lwork += per_step) > LINE_WORK_MAX)
             return SQ_FAIL(err, SQ_ERR_LAYOUT,
@@ -190,67 +271,10 @@ sq_status lay_trace_line(lay_repair *r, const double p0[2], const double d0[2], 
         }
         xn[0] = x[0] + h * dd[0] / n2;
         xn[1] = x[1] + h * dd[1] / n2;
-        /* first thing the step meets: boundary or a separatrix */
-        double tbest = 2.0;
-        int kind = 0, which = -1;
-        double where = 0.0;
-        for (int b = 0; b < r->nb; b++) {
-            const double *q = &r->bxy[4 * b];
-            double t, u;
-            if (!lay_seg_seg(x, xn, q, q + 2, &t, &u)) continue;
-            if (len + t * h <= fmax(skip, 0.5 * r->step)) continue; /* chords: sagitta */
-            if (t < tbest) {
-                tbest = t;
-                kind = 1;
-                which = b;
-                where = u;
-            }
-        }
-        for (int i = 0; i < S->n; i++) {
-            const sq_separatrix *s = &S->s[i];
-            for (int j = 0; j + 1 < s->npts; j++) {
-                double t, u;
-                if (!lay_seg_seg(x, xn, &s->xy[2 * j], &s->xy[2 * j + 2], &t, &u)) continue;
-                if (len + t * h <= skip) continue;
-                if (t < tbest) {
-                    tbest = t;
-                    kind = 2;
-                    which = i;
-                    where = j + fmin(fmax(u, 0.0), 1.0);
-                }
-            }
-        }
-        if (kind == 1) {
-            int e = r->bedge[which];
-            double s = r->bs[2 * which] + where * (r->bs[2 * which + 1] - r->bs[2 * which]);
-            double dir[2] = {xn[0] - x[0], xn[1] - x[1]}, p[2];
-            SQ_TRY(boundary_exact(r, e, x, dir, &s, p, err));
-            double L = cad_face_edge_length(r->face, e), snap = 1e-6 * r->L->scale;
-            out->end.kind = SQ_END_BOUNDARY;
-            out->end.id = e;
-            out->end.s = s;
-            for (int v = 0; v < r->info->nvertices; v++) {
-                const sq_vertex *V = &r->info->vertices[v];
-                if ((V->edge_out == e && s <= snap) || (V->edge_in == e && s >= L - snap)) {
-                    out->end.kind = SQ_END_CORNER;
-                    out->end.id = v;
-                    p[0] = V->x;
-                    p[1] = V->y;
-                }
-            }
-            return line_push(out, p, err);
-        }
-        if (kind == 2) {
-            const sq_separatrix *s = &S->s[which];
-            int j = (int)floor(where);
-            if (j >= s->npts - 1) j = s->npts - 2;
-            double u = where - j, p[2];
-            p[0] = s->xy[2 * j] + u * (s->xy[2 * j + 2] - s->xy[2 * j]);
-            p[1] = s->xy[2 * j + 1] + u * (s->xy[2 * j + 3] - s->xy[2 * j + 1]);
-            out->hit_sep = which;
-            out->hit_pos = where;
-            return line_push(out, p, err);
-        }
+        int hit;
+        /* near the start, boundary chords within a sagitta are no hit */
+        SQ_TRY(first_hit(r, x, xn, len, h, skip, fmax(skip, 0.5 * r->step), out, &hit, err));
+        if (hit) return SQ_OK;
         SQ_TRY(line_push(out, xn, err));
         d[0] = dd[0] / n2;
         d[1] = dd[1] / n2;
@@ -260,6 +284,33 @@ sq_status lay_trace_line(lay_repair *r, const double p0[2], const double d0[2], 
     }
     return SQ_FAIL(err, SQ_ERR_LAYOUT, "repair line from (%g, %g) longer than %g", p0[0], p0[1],
                    r->maxlen);
+}
+
+/* a ray is cut into pieces of a step, at most this many */
+#define RAY_PIECES_MAX 4096
+
+sq_status lay_ray_line(lay_repair *r, const double p0[2], const double d0[2], double skip,
+                       lay_line *out, sq_error *err)
+{
+    SQ_TRY(line_start(out, p0, err));
+    /* longer than the face's bounding box: a ray from inside meets its
+     * boundary within it */
+    double nd = hypot(d0[0], d0[1]), h = 2.0 * r->L->scale;
+    double xn[2] = {p0[0] + h * d0[0] / nd, p0[1] + h * d0[1] / nd};
+    r->lwork += (double)(r->nb + lay_set_points(&r->L->seps));
+    int found;
+    SQ_TRY(first_hit(r, p0, xn, 0.0, h, skip, skip, out, &found, err));
+    if (!found)
+        return SQ_FAIL(err, SQ_ERR_LAYOUT, "ray from (%g, %g) meets no boundary", p0[0], p0[1]);
+    /* points a step apart, as a traced line's */
+    double e[2] = {out->xy[2], out->xy[3]}, len = hypot(e[0] - p0[0], e[1] - p0[1]);
+    int m = (int)fmin(ceil(len / r->step), RAY_PIECES_MAX);
+    out->npts = 1;
+    for (int k = 1; k < m; k++) {
+        double q[2] = {p0[0] + (e[0] - p0[0]) * k / m, p0[1] + (e[1] - p0[1]) * k / m};
+        SQ_TRY(line_push(out, q, err));
+    }
+    return line_push(out, e, err);
 }
 
 /* Finish a repair line from node `from`: append it to the set, ending on the

@@ -182,7 +182,8 @@ static sq_status settle(lay_repair *r, int *ndef, sq_error *err)
 #define MAX_TRIALS 16
 
 typedef struct {
-    int patch, corner; /* corner < 0: the n-quad split */
+    int patch, corner; /* corner -1: the n-quad split, -2: removing separatrix sep */
+    int sep;
     double dir[2];
 } candidate;
 
@@ -197,8 +198,9 @@ static sq_status try_candidate(lay_repair *r, const candidate *c, int before, in
     SQ_TRY(snapshot_take(r->L, &s, err));
     sq_error e2;
     int ndef = INT_MAX;
-    sq_status st = c->corner >= 0 ? extra_separatrix(r, c->patch, c->corner, c->dir, &e2)
-                                  : lay_split_centre(r, c->patch, 1, &e2);
+    sq_status st = c->corner >= 0    ? extra_separatrix(r, c->patch, c->corner, c->dir, &e2)
+                   : c->corner == -1 ? lay_split_centre(r, c->patch, 1, &e2)
+                                     : lay_remove_sep(r, c->sep, &e2);
     if (st == SQ_OK) st = settle(r, &ndef, &e2);
     if (st == SQ_ERR_INTERNAL) {
         snapshot_free(&s);
@@ -215,26 +217,53 @@ static sq_status try_candidate(lay_repair *r, const candidate *c, int before, in
     return lay_graph_build(r->L, r->face, r->info, err);
 }
 
-/* A patch with n != 4 corners that the triangle repairs leave (a pentagon,
- * a hexagon, a triangle they could not mend): first an extra separatrix
- * from a corner whose angle holds a cross branch, else the n-quad split;
- * the first that leaves fewer defects than `before` is kept. */
+/* A patch of at most 3 corners: the separatrices bounding it removed, one
+ * at a time (a sliver along the boundary, a triangle beside a singular
+ * point that captured one separatrix too many); *done when one is kept. */
+static sq_status remove_bounding(lay_repair *r, int p, int before, int *done, sq_error *err)
+{
+    sq_layout *L = r->L;
+    const sq_layout_patch *P = &L->patches[p];
+    int nh = P->nhalf, *seps = malloc((size_t)(nh > 0 ? nh : 1) * sizeof *seps), m = 0;
+    if (!seps) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int h = 0; h < nh; h++) { /* P is rebuilt by every trial: copy first */
+        int k = L->edges[P->half[h].edge].sep, seen = 0;
+        for (int j = 0; j < m; j++) seen |= seps[j] == k;
+        if (k >= 0 && !seen) seps[m++] = k;
+    }
+    sq_status st = SQ_OK;
+    for (int j = 0; j < m && !*done && st == SQ_OK; j++) {
+        candidate c = {p, -2, seps[j], {0.0, 0.0}};
+        st = try_candidate(r, &c, before, done, err);
+        if (*done) L->stats.separatrices_removed++;
+    }
+    free(seps);
+    return st;
+}
+
+/* A patch with n != 4 corners that the triangle repairs leave (a sliver, a
+ * pentagon, a hexagon, a triangle they could not mend): for n <= 3 first a
+ * separatrix bounding it removed, then an extra separatrix from a corner
+ * whose angle holds a cross branch, else the n-quad split; the first that
+ * leaves fewer defects than `before` is kept. */
 sq_status lay_repair_polygon(lay_repair *r, int before, int *done, sq_error *err)
 {
     sq_layout *L = r->L;
     for (int p = 0; p < L->npatches && !*done; p++) {
         if (L->patches[p].ncycles != 1 || L->patches[p].ncorners == 4) continue;
+        if (L->patches[p].ncorners <= 3) SQ_TRY(remove_bounding(r, p, before, done, err));
+        if (*done) break;
         for (int k = 0; k < L->patches[p].ncorners && !*done; k++) {
             double dir[8];
             int nd = wedge_branches(r, &L->patches[p], k, dir);
             for (int j = 0; j < nd && !*done; j++) {
-                candidate c = {p, k, {dir[2 * j], dir[2 * j + 1]}};
+                candidate c = {p, k, -1, {dir[2 * j], dir[2 * j + 1]}};
                 SQ_TRY(try_candidate(r, &c, before, done, err));
                 if (*done) L->stats.extra_separatrices++;
             }
         }
         if (*done || L->patches[p].ncorners < 2) continue;
-        candidate c = {p, -1, {0.0, 0.0}};
+        candidate c = {p, -1, -1, {0.0, 0.0}};
         SQ_TRY(try_candidate(r, &c, before, done, err));
         if (*done) L->stats.polygons_split++;
     }

@@ -39,6 +39,11 @@ typedef struct {
  * (2026-11-26), the most took 1.3e8 (0100), the examples' 1.3e5 (annulus),
  * T106's none.  A bound on the work, not on the clock, as WORK_MAX. */
 #define LINE_WORK_MAX 2e9
+/* A step's field evaluation (locating the point, the element's Dubiner
+ * modes) in the same unit: about 2 us against 5 ns a segment test.  Without
+ * it a line among few segments ran uncounted (stress corpus 0311: 60 s of
+ * field evaluations within the bound). */
+#define LINE_STEP_WORK 400.0
 
 /* Points of the separatrix set (repair_set.c). */
 long lay_set_points(const sq_separatrix_set *S);
@@ -70,6 +75,13 @@ int lay_branch(const lay_repair *r, const double x[2], int *elem, const double d
 sq_status lay_trace_line(lay_repair *r, const double p0[2], const double d0[2], double skip,
                          lay_line *out, sq_error *err);
 
+/* The straight ray from p0 in direction d0 to the first boundary point or
+ * separatrix it meets (hits within `skip` of p0 ignored), as lay_trace_line's
+ * line: the shortest admissible connection where the field line cannot be
+ * followed to an end; out->xy malloc'ed. */
+sq_status lay_ray_line(lay_repair *r, const double p0[2], const double d0[2], double skip,
+                       lay_line *out, sq_error *err);
+
 /* The line appended to the set from `start`, ending on the boundary, at a
  * nearby inserted node or at a new T-junction. */
 sq_status lay_add_line(lay_repair *r, lay_line *ln, sq_sep_end start, sq_error *err);
@@ -95,6 +107,17 @@ sq_status lay_add_spoke(lay_repair *r, int M, const double cen[2], const double 
 
 /* The n-quad split of patch p; spokes may bend only if `bent`. */
 sq_status lay_split_centre(lay_repair *r, int p, int bent, sq_error *err);
+
+/* ---- repair_remove.c ---- */
+
+/* The separatrices ending at singular node t: their count; the first `max`
+ * of them in ids[] with the end (0 start, 1 end) in ends[]. */
+int lay_ends_at(const sq_layout *L, int t, int *ids, int *ends, int max);
+
+/* Remove separatrix k of the set: SQ_ERR_LAYOUT (nothing changed) if a
+ * singular point it ends at would be left short of its valence or an
+ * inserted node it ends at would not keep two ends, joined through it. */
+sq_status lay_remove_sep(lay_repair *r, int k, sq_error *err);
 
 /* ---- the repairs: each applies at most one change (*done) ---- */
 

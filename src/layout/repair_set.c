@@ -207,16 +207,8 @@ static sq_status repair_tjunction(lay_repair *r, int *done, sq_error *err)
         if (L->role[t] != SQ_LROLE_TJUNCTION) continue;
         /* the three separatrix ends at t; the stem is the one not in the most
          * opposite pair */
-        int ids[8], ends[8], m = 0;
-        for (int k = 0; k < L->seps.n && m < 8; k++)
-            for (int w = 0; w < 2 && m < 8; w++) {
-                const sq_sep_end *e = w ? &L->seps.s[k].end : &L->seps.s[k].start;
-                if (e->kind == SQ_END_SINGULAR && e->id == t) {
-                    ids[m] = k;
-                    ends[m++] = w;
-                }
-            }
-        if (m != 3) continue;
+        int ids[3], ends[3];
+        if (lay_ends_at(L, t, ids, ends, 3) != 3) continue;
         double d[3][2];
         for (int k = 0; k < 3; k++) lay_leave_dir(&L->seps.s[ids[k]], ends[k], d[k], L->scale);
         int stem = 0;
@@ -230,8 +222,21 @@ static sq_status repair_tjunction(lay_repair *r, int *done, sq_error *err)
             }
         }
         double dir[2] = {-d[stem][0], -d[stem][1]}, p[2] = {L->sing[t].x, L->sing[t].y};
+        /* where the field line runs out of its length (a thin patch's
+         * tiny steps, a line circling without meeting anything), the
+         * straight ray: the shortest connection to the opposite side; not
+         * past the repair lines' work bound, which ends the repairs */
         lay_line ln;
-        sq_status st = lay_trace_line(r, p, dir, 1e-6 * L->scale, &ln, err);
+        sq_error e2, e3;
+        sq_status st = lay_trace_line(r, p, dir, 1e-6 * L->scale, &ln, &e2), st2 = st;
+        if (st == SQ_ERR_LAYOUT && r->lwork <= LINE_WORK_MAX) { /* else e2 is the error */
+            free(ln.xy);
+            st2 = lay_ray_line(r, p, dir, 1e-6 * L->scale, &ln, &e3);
+            if (st2 == SQ_OK) L->stats.straight_stems++;
+            if (st2 == SQ_ERR_INTERNAL) st = st2, e2 = e3; /* else the field line's reason */
+        }
+        if (st2 != SQ_OK && err) *err = e2;
+        st = st2 == SQ_OK ? SQ_OK : st;
         if (st == SQ_OK) st = lay_add_line(r, &ln, (sq_sep_end){SQ_END_SINGULAR, t, 0.0}, err);
         free(ln.xy);
         if (st != SQ_OK) return st;

@@ -3,6 +3,7 @@
  * The integrator and the stops are in trace_ab4.c, Algorithm 1 in
  * trace_start.c. */
 #include "trace_private.h"
+#include "layout.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -419,6 +420,28 @@ static void walk_set_free(walk_set *ws)
     free(ws->merged);
 }
 
+/* Does a face vertex taking `quads` quads start separatrices (quads - 1)?
+ * Not a smooth junction, nor a vertex taking 2 quads whose angle is within
+ * SQ_LAYOUT_BEND_TOL_DEG of 180 deg: the layout counts neither as a patch
+ * corner (layout_patches.c, layout_check.c), and the separatrix that would
+ * split a 135-180 deg angle in two leaves along one of its edges where the
+ * field follows a curved edge beside it, a boundary-hugging sliver of 1-
+ * and 2-corner patches (stress corpus 0035: 137.7 and 155.5 deg).  Such a
+ * vertex contributes 2 - 2 = 0 to Gauss-Bonnet either way.  Not beside an
+ * edge shorter than BEND_MIN_EDGE_REL of the face's size: on a patch side
+ * such an edge is one chord's end squeezed to its length, wedges of scaled
+ * Jacobian 1e-4-1e-2 (corpus 0103, 0215, 0295: 1e-6-5e-5 edges), and the
+ * repairs around it run 5 x longer (0311). */
+#define BEND_MIN_EDGE_REL 0.01
+static int starts_separatrices(const sq_tracer *tr, const sq_vertex *v, int quads)
+{
+    if (v->smooth || quads < 2) return 0;
+    double shortest = fmin(cad_face_edge_length(tr->face, v->edge_in),
+                           cad_face_edge_length(tr->face, v->edge_out));
+    return !(quads == 2 && fabs(v->angle_deg - 180.0) < SQ_LAYOUT_BEND_TOL_DEG &&
+             shortest >= BEND_MIN_EDGE_REL * tr->scale);
+}
+
 static sq_status run(sq_tracer *tr, const int *vertex_quads, walk_set *ws, sq_error *err)
 {
     const sq_face_info *info = tr->info;
@@ -430,7 +453,7 @@ static sq_status run(sq_tracer *tr, const int *vertex_quads, walk_set *ws, sq_er
         cap += tr->sing[j].valence;
     }
     for (int k = 0; k < info->nvertices; k++)
-        if (vertex_quads && !info->vertices[k].smooth && vertex_quads[k] >= 2)
+        if (vertex_quads && starts_separatrices(tr, &info->vertices[k], vertex_quads[k]))
             cap += vertex_quads[k] - 1;
     ws->w = calloc(cap ? cap : 1, sizeof *ws->w);
     ws->partner = malloc((cap ? cap : 1) * sizeof *ws->partner);
@@ -450,10 +473,8 @@ static sq_status run(sq_tracer *tr, const int *vertex_quads, walk_set *ws, sq_er
             w->start.id = j;
         }
     }
-    /* smooth junctions take 2 quads but are no layout nodes: nothing
-     * starts there */
     for (int k = 0; k < info->nvertices; k++) {
-        if (!vertex_quads || info->vertices[k].smooth || vertex_quads[k] < 2) continue;
+        if (!vertex_quads || !starts_separatrices(tr, &info->vertices[k], vertex_quads[k])) continue;
         int n = vertex_quads[k];
         if (n > 64) return SQ_FAIL(err, SQ_ERR_PATTERN, "vertex %d takes %d quads", k, n);
         SQ_TRY(sq_trace_corner_starts(tr, k, n, alpha, &h0, err));
