@@ -2,7 +2,7 @@
  * on the boundary refused, corner overrides, and the Gauss–Bonnet check
  * with both sides and the smallest fix in the message. */
 #include "pattern.h"
-#include "test_util.h"
+#include "test_face.h"
 
 #include <gsl/gsl_errno.h>
 
@@ -30,14 +30,11 @@ static int expect_fail(const char *text, const char *want, const cad_face *f,
 int main(void)
 {
     gsl_set_error_handler_off();
-    char path[4096];
     sq_error err;
     cad_model *m = NULL;
     cad_face *f = NULL;
     sq_face_info info;
-    sq_test_path(path, sizeof path, 0, "square.step");
-    SQ_TEST_OK(cad_model_read(path, &m, &err), err);
-    SQ_TEST_OK(cad_face_create(m, 0, &f, &err), err);
+    sq_test_open_face("square.step", &m, &f);
     SQ_TEST_OK(sq_face_info_compute(f, &info, &err), err);
     int fails = 0;
 

@@ -6,20 +6,17 @@
  * few U (edge angles through atan2) amplified by the solves' condition
  * numbers, 1e5 at most on these ~1e3-unknown systems: 1e5 * few U. */
 #include "htheta_field.h"
-#include "test_util.h"
+#include "test_face.h"
 
 #include <gsl/gsl_errno.h>
 
 int main(void)
 {
     gsl_set_error_handler_off();
-    char path[4096];
     sq_error err;
     cad_model *m = NULL;
     cad_face *f = NULL;
-    sq_test_path(path, sizeof path, 0, "square.step");
-    SQ_TEST_OK(cad_model_read(path, &m, &err), err);
-    SQ_TEST_OK(cad_face_create(m, 0, &f, &err), err);
+    sq_test_open_face("square.step", &m, &f);
     sq_pattern p;
     SQ_TEST_OK(sq_pattern_parse("# nothing\n", "empty", &p, &err), err);
     sq_htheta_options o;

@@ -4,7 +4,7 @@
  * names loop 1.  The jump of θ around the hole is its turning (2π here)
  * plus a multiple of π/2, as Gauss–Bonnet makes it. */
 #include "htheta_field.h"
-#include "test_util.h"
+#include "test_face.h"
 
 #include <gsl/gsl_errno.h>
 
@@ -15,9 +15,7 @@ int main(void)
     sq_error err;
     cad_model *m = NULL;
     cad_face *f = NULL;
-    sq_test_path(path, sizeof path, 0, "square_hole.step");
-    SQ_TEST_OK(cad_model_read(path, &m, &err), err);
-    SQ_TEST_OK(cad_face_create(m, 0, &f, &err), err);
+    sq_test_open_face("square_hole.step", &m, &f);
     int fails = 0;
     sq_htheta_options o;
     sq_htheta_options_default(&o);
