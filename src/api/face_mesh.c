@@ -103,12 +103,6 @@ static sq_status mesh_halving(mesh_fn mesh, void *ctx, sq_mesher_options mo, dou
     return st;
 }
 
-/* The size the mesher takes (mo's, else its default for the area). */
-static double mesher_size(const sq_mesher_options *mo, double area)
-{
-    return mo->size > 0.0 ? mo->size : sq_mesher_default_size(area);
-}
-
 typedef struct {
     const cad_face *face;
     const sq_layout_result *r;
@@ -124,7 +118,7 @@ static sq_status mesh_by_layout(void *ctx, const sq_mesher_options *mo, sq_quad_
     const layout_ctx *c = ctx;
     SQ_TRY(sq_mesh_layout(c->face, c->r->info, &c->r->layout, mo, m, err));
     if (!c->per) return SQ_OK;
-    sq_status st = sq_periodic_link(c->per, *m, mesher_size(mo, c->r->layout.face_area), err);
+    sq_status st = sq_periodic_link(c->per, *m, sq_mesher_size(mo, c->r->layout.face_area), err);
     if (st != SQ_OK) sq_quad_mesh_free(m);
     return st;
 }
@@ -146,7 +140,7 @@ static sq_status mesh_by_split(void *ctx, const sq_mesher_options *mo, sq_quad_m
     sq_domain d;
     int rounds = 0;
     sq_mesher_options o = *mo;
-    o.size = mesher_size(mo, c->info->area);
+    o.size = sq_mesher_size(mo, c->info->area);
     SQ_TRY(sq_periodic_domain(&c->face, c->info, c->per, &d, err));
     sq_status st = sq_domain_mesh_split(&d, &o, m, &rounds, err);
     sq_domain_free(&d);

@@ -12,12 +12,6 @@ static sq_status edge_at(const cad_face *f, int e, double frac, double xy[2], sq
     return cad_face_edge_eval(f, e, frac * cad_face_edge_length(f, e), xy, NULL, NULL, err);
 }
 
-static void apply(const double T[6], const double p[2], double q[2])
-{
-    q[0] = T[0] * p[0] + T[1] * p[1] + T[2];
-    q[1] = T[3] * p[0] + T[4] * p[1] + T[5];
-}
-
 /* The rigid motion taking p0 to q0 and p1 to q1 (|p1 - p0| = |q1 - q0| to
  * tol, else 0): the angle between the chords, a translation below tol of
  * turning over the chord. */
@@ -56,7 +50,7 @@ static sq_status pair_gap(const cad_face *f, int a, int b, const double T[6], do
         double u = (double)k / (NCHECK - 1), pa[2], pb[2], q[2];
         SQ_TRY(edge_at(f, a, u, pa, err));
         SQ_TRY(edge_at(f, b, 1.0 - u, pb, err));
-        apply(T, pa, q);
+        sq_affine_map(T, pa, q);
         *gap = fmax(*gap, hypot(q[0] - pb[0], q[1] - pb[1]));
     }
     return SQ_OK;
@@ -108,7 +102,7 @@ static int same_transform(const double S[6], const double T[6], const double bbo
 {
     for (int k = 0; k < 4; k++) {
         double p[2] = {bbox[2 * (k & 1)], bbox[1 + 2 * (k >> 1)]}, u[2], v[2];
-        apply(S, p, u), apply(T, p, v);
+        sq_affine_map(S, p, u), sq_affine_map(T, p, v);
         if (hypot(u[0] - v[0], u[1] - v[1]) > tol) return 0;
     }
     return 1;

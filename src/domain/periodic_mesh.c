@@ -41,12 +41,6 @@ sq_status sq_periodic_domain(const cad_face *const *face, const sq_face_info *in
     return SQ_OK;
 }
 
-static int cmp_int(const void *a, const void *b)
-{
-    int x = *(const int *)a, y = *(const int *)b;
-    return (x > y) - (x < y);
-}
-
 /* The distinct nodes of m's sides on curve t (*n of them, sorted). */
 static sq_status curve_nodes(const sq_quad_mesh *m, int t, int **nodes, int *n, sq_error *err)
 {
@@ -60,16 +54,13 @@ static sq_status curve_nodes(const sq_quad_mesh *m, int t, int **nodes, int *n, 
         const int *c = &m->conn[(size_t)m->bnd_quad[s] * npe];
         for (int k = 0; k <= Q; k++) (*nodes)[(*n)++] = c[sq_quad_side_node(Q, m->bnd_side[s], k)];
     }
-    qsort(*nodes, (size_t)*n, sizeof(int), cmp_int);
-    int u = 0;
-    for (int k = 0; k < *n; k++)
-        if (u == 0 || (*nodes)[k] != (*nodes)[u - 1]) (*nodes)[u++] = (*nodes)[k];
-    *n = u;
+    *n = sq_sort_unique(*nodes, *n);
     return SQ_OK;
 }
 
 /* The link of pair r: every node of b paired with the node of a whose
- * image is nearest, one to one within tol, or SQ_ERR_LAYOUT. */
+ * image is nearest, one to one within tol, or SQ_ERR_LAYOUT; l's arrays
+ * are its own (freed by the caller, also on failure). */
 static sq_status link_pair(const sq_periodic_pair *r, const sq_quad_mesh *m, double tol,
                            sq_quad_periodic *l, sq_error *err)
 {
@@ -77,7 +68,8 @@ static sq_status link_pair(const sq_periodic_pair *r, const sq_quad_mesh *m, dou
     sq_status st = curve_nodes(m, r->a, &na, &ca, err);
     if (st == SQ_OK) st = curve_nodes(m, r->b, &nb, &cb, err);
     char *used = st == SQ_OK ? calloc((size_t)ca + 1, 1) : NULL;
-    if (st == SQ_OK && !used) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    l->master_node = st == SQ_OK ? malloc(sizeof(int) * ((size_t)cb + 1)) : NULL;
+    if (st == SQ_OK && (!used || !l->master_node)) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK && ca != cb)
         st = SQ_FAIL(err, SQ_ERR_LAYOUT, "periodic edges %d and %d carry %d and %d nodes", r->a,
                      r->b, ca, cb);
@@ -87,8 +79,9 @@ static sq_status link_pair(const sq_periodic_pair *r, const sq_quad_mesh *m, dou
         int best = -1;
         double dbest = HUGE_VAL;
         for (int i = 0; i < ca; i++) {
-            const double *x = &m->xy[2 * (size_t)na[i]];
-            double d = hypot(T[0] * x[0] + T[1] * x[1] + T[2] - y[0], T[3] * x[0] + T[4] * x[1] + T[5] - y[1]);
+            double x[2];
+            sq_affine_map(T, &m->xy[2 * (size_t)na[i]], x);
+            const double d = hypot(x[0] - y[0], x[1] - y[1]);
             if (d < dbest) dbest = d, best = i;
         }
         if (dbest > tol || used[best])
@@ -111,11 +104,7 @@ sq_status sq_periodic_link(const sq_periodic *p, sq_quad_mesh *m, double size, s
     sq_quad_mesh_free_periodic(m);
     for (int k = 0; k < p->npairs; k++) {
         sq_quad_periodic l = {0};
-        int ns = 0;
-        for (int s = 0; s < m->nbnd; s++) ns += m->bnd_tag[s] == p->pairs[k].b;
-        l.master_node = malloc(sizeof(int) * ((size_t)ns * (size_t)(m->order + 1) + 1));
-        sq_status st = l.master_node ? link_pair(&p->pairs[k], m, PARTNER_REL_TOL * size, &l, err)
-                                     : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        sq_status st = link_pair(&p->pairs[k], m, PARTNER_REL_TOL * size, &l, err);
         if (st == SQ_OK) st = sq_quad_mesh_add_periodic(m, &l, err);
         if (st != SQ_OK) {
             free(l.node), free(l.master_node);

@@ -245,8 +245,13 @@ static void periodic(msh_writer *w)
         const double *T = p->affine;
         double A[16] = {T[0], T[1], 0, T[2], T[3], T[4], 0, T[5], 0, 0, 1, 0, 0, 0, 0, 1};
         if (!w->binary) {
-            fprintf(w->fp, "1 %d %d\n16 %.17g %.17g 0 %.17g %.17g %.17g 0 %.17g 0 0 1 0 0 0 0 1\n%d\n",
-                    p->tag + 1, p->master + 1, T[0], T[1], T[2], T[3], T[4], T[5], p->nnodes);
+            fprintf(w->fp, "1 %d %d\n16", p->tag + 1, p->master + 1);
+            for (int k = 0; k < 16; k++) {
+                char x[SQ_DOUBLE_CHARS];
+                sq_format_double(x, A[k]);
+                fprintf(w->fp, " %s", x);
+            }
+            fprintf(w->fp, "\n%d\n", p->nnodes);
             for (int k = 0; k < p->nnodes; k++)
                 fprintf(w->fp, "%d %d\n", p->node[k] + 1, p->master_node[k] + 1);
             continue;

@@ -51,12 +51,6 @@ static void put_point(FILE *fp, const char *before, int id, const double *xy, co
     fwrite(line, 1, n + k, fp);
 }
 
-static int cmp_int(const void *a, const void *b)
-{
-    int x = *(const int *)a, y = *(const int *)b;
-    return (x > y) - (x < y);
-}
-
 /* Periodic sides (docs/domains.md): the links of one transform (a chain)
  * give two composites, their masters' edges and theirs, numbered after the
  * curves' and the faces', for a <P> boundary condition each. */
@@ -77,7 +71,7 @@ static void periodic_composites(FILE *fp, const sq_quad_mesh *m, const int *edge
                     if (m->bnd_tag[s] == (side ? p->tag : p->master))
                         list[n++] = edge_of[4 * m->bnd_quad[s] + m->bnd_side[s]];
             }
-            qsort(list, (size_t)n, sizeof *list, cmp_int);
+            n = sq_sort_unique(list, n);
             fprintf(fp, "      <C ID=\"%d\" NAME=\"periodic_%d_%s\"> E[", id++, chain,
                     side ? "image" : "master");
             write_ranges(fp, list, n);
@@ -207,7 +201,7 @@ sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_prog
             if (sq_quad_mesh_tag_group(m, m->bnd_tag[s]) == t)
                 list[n++] = edge_of[4 * m->bnd_quad[s] + m->bnd_side[s]];
         if (!n) continue;
-        qsort(list, (size_t)n, sizeof *list, cmp_int);
+        n = sq_sort_unique(list, n);
         if (m->tag_name && m->tag_name[t])
             fprintf(fp, "      <C ID=\"%d\" NAME=\"%s\"> E[", t + 1, m->tag_name[t]);
         else

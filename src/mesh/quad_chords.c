@@ -76,7 +76,7 @@ sq_status qm_size_measure(const sq_layout *L, const cad_face *face, const sq_fac
                           const sq_mesher_options *o, const int *grade, double *m, double *cum,
                           sq_error *err)
 {
-    double size = o->size > 0.0 ? o->size : sq_mesher_default_size(L->face_area);
+    double size = sq_mesher_size(o, L->face_area);
     int sub = o->sizes ? USER_SIZE_SUB : 1, ns = SIZE_SAMPLES * sub;
     for (int e = 0; e < L->nedges; e++) {
         double *c = &cum[(size_t)e * (SIZE_SAMPLES + 1)], prev = 1.0, r = 1.0;

@@ -44,12 +44,8 @@ static sq_status patch_grid(const sq_layout *L, const cad_face *face, const sq_l
     for (int j = 0; j <= GRID; j++)
         for (int i = 0; i <= GRID; i++) {
             double u = (double)i / GRID, v = (double)j / GRID;
-            const double *B = s[0][i], *R = s[1][j], *T = s[2][GRID - i], *Lf = s[3][GRID - j];
-            for (int c = 0; c < 2; c++)
-                x[j * (GRID + 1) + i][c] =
-                    (1 - v) * B[c] + v * T[c] + (1 - u) * Lf[c] + u * R[c] -
-                    ((1 - u) * (1 - v) * s[0][0][c] + u * (1 - v) * s[1][0][c] +
-                     u * v * s[2][0][c] + (1 - u) * v * s[3][0][c]);
+            qm_coons(s[0][i], s[2][GRID - i], s[3][GRID - j], s[1][j], s[0][0], s[1][0], s[2][0],
+                     s[3][0], u, v, x[j * (GRID + 1) + i]);
         }
     return SQ_OK;
 }

@@ -339,3 +339,18 @@ const char *sq_quad_mesh_tag_name(const sq_quad_mesh *m, int t, char *buf, size_
     snprintf(buf, n, "boundary_%d", t);
     return buf;
 }
+
+static int cmp_int(const void *a, const void *b)
+{
+    int x = *(const int *)a, y = *(const int *)b;
+    return (x > y) - (x < y);
+}
+
+int sq_sort_unique(int *a, int n)
+{
+    qsort(a, (size_t)n, sizeof *a, cmp_int);
+    int u = 0;
+    for (int k = 0; k < n; k++)
+        if (u == 0 || a[k] != a[u - 1]) a[u++] = a[k];
+    return u;
+}

@@ -128,6 +128,11 @@ sq_status sq_mesh_linear_quads(const cad_face *face, const sq_face_info *info,
 
 double sq_mesher_default_size(double area) { return sqrt(fabs(area)) / 8.0; }
 
+double sq_mesher_size(const sq_mesher_options *opt, double area)
+{
+    return opt->size > 0.0 ? opt->size : sq_mesher_default_size(area);
+}
+
 sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const sq_layout *L,
                          const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
 {
@@ -138,7 +143,7 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
         if (!is_quad(&L->patches[q]))
             return SQ_FAIL(err, SQ_ERR_LAYOUT, "patch %d is not a quad (%d corners)", q,
                            L->patches[q].ncorners);
-    double size = opt->size > 0.0 ? opt->size : sq_mesher_default_size(L->face_area);
+    double size = sq_mesher_size(opt, L->face_area);
     int *nseg = malloc(sizeof(int) * ((size_t)L->nedges + 1));
     int *grade = malloc(sizeof(int) * ((size_t)L->nedges + 1));
     double *elen = malloc(sizeof(double) * ((size_t)L->nedges + 1));

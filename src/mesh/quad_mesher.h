@@ -72,6 +72,8 @@ void sq_mesher_options_default(sq_mesher_options *opt);
 /* The target size where sq_mesher_options.size is not set, on a face of
  * area `area` (both roads): sqrt(area)/8. */
 double sq_mesher_default_size(double area);
+/* The size the mesher works at: opt->size where set, else the default. */
+double sq_mesher_size(const sq_mesher_options *opt, double area);
 
 /* Refuse (SQ_ERR_USAGE) a size whose quads, about area / size^2, are more
  * than max_quads, naming the smallest size that fits: a check before any

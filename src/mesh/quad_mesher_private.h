@@ -87,6 +87,19 @@ sq_status qm_bl_keep(const cad_face *face, const sq_mesher_options *opt, const q
 
 /* ---- quad_transfinite.c, quad_assemble.c: designs 2 and 3 ---- */
 
+/* Transfinite (Coons) interpolation at (u, v) in [0, 1]^2 of the side
+ * points B(u) (v = 0), T(u) (v = 1), Lf(v) (u = 0), R(v) (u = 1) and the
+ * corners P00, P10, P11, P01: x. */
+static inline void qm_coons(const double *B, const double *T, const double *Lf, const double *R,
+                            const double *P00, const double *P10, const double *P11,
+                            const double *P01, double u, double v, double x[2])
+{
+    for (int c = 0; c < 2; c++)
+        x[c] = (1 - v) * B[c] + v * T[c] + (1 - u) * Lf[c] + u * R[c] -
+               ((1 - u) * (1 - v) * P00[c] + u * (1 - v) * P10[c] + u * v * P11[c] +
+                (1 - u) * v * P01[c]);
+}
+
 void qm_patch_grid_free(qm_patch_grid *g);
 /* The grids of the layout's patches (grids[npatches]), from the edges'
  * nodes; their interior vertices numbered from *next_id on; "mesh"

@@ -6,17 +6,19 @@
 #include <stdlib.h>
 #include <string.h>
 
+void sq_affine_map(const double T[6], const double p[2], double q[2])
+{
+    const double q0 = T[0] * p[0] + T[1] * p[1] + T[2], q1 = T[3] * p[0] + T[4] * p[1] + T[5];
+    q[0] = q0, q[1] = q1;
+}
+
 void sq_quad_mesh_apply_periodic(sq_quad_mesh *m)
 {
     for (int l = 0; l < m->nperiodic; l++) {
         const sq_quad_periodic *p = &m->periodic[l];
-        const double *T = p->affine;
-        for (int k = 0; k < p->nnodes; k++) {
-            const double *x = &m->xy[2 * (size_t)p->master_node[k]];
-            double *y = &m->xy[2 * (size_t)p->node[k]];
-            double y0 = T[0] * x[0] + T[1] * x[1] + T[2], y1 = T[3] * x[0] + T[4] * x[1] + T[5];
-            y[0] = y0, y[1] = y1;
-        }
+        for (int k = 0; k < p->nnodes; k++)
+            sq_affine_map(p->affine, &m->xy[2 * (size_t)p->master_node[k]],
+                          &m->xy[2 * (size_t)p->node[k]]);
     }
 }
 

@@ -159,7 +159,7 @@ sq_status sq_split_triangulate(const cad_face *face, const sq_face_info *info,
                                const sq_mesher_options *opt, sq_triangulation *tri, sq_error *err)
 {
     memset(tri, 0, sizeof *tri);
-    double size = opt->size > 0.0 ? opt->size : sq_mesher_default_size(info->area);
+    double size = sq_mesher_size(opt, info->area);
     if (opt->max_quads > 0.0) SQ_TRY(sq_mesher_check_size(info->area, size, opt->max_quads, err));
     SQ_TRY(triangulate(face, info, size, opt, tri, err));
     double nquads = 3.0 * tri->mesh->ntris;

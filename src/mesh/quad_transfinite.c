@@ -127,11 +127,7 @@ static sq_status fill_patch(const sq_layout *L, const qm_edge_nodes *en, int Q, 
             double xi = (fb[i] + du * fl[j]) / (1.0 - du * dv), eta = fl[j] + dv * xi;
             const double *B = &g->xy[2 * G(i, 0)], *T = &g->xy[2 * G(i, NV)];
             const double *Lf = &g->xy[2 * G(0, j)], *R = &g->xy[2 * G(NU, j)];
-            for (int c = 0; c < 2; c++)
-                g->xy[2 * G(i, j) + c] =
-                    (1 - eta) * B[c] + eta * T[c] + (1 - xi) * Lf[c] + xi * R[c] -
-                    ((1 - xi) * (1 - eta) * P00[c] + xi * (1 - eta) * P10[c] + xi * eta * P11[c] +
-                     (1 - xi) * eta * P01[c]);
+            qm_coons(B, T, Lf, R, P00, P10, P11, P01, xi, eta, &g->xy[2 * G(i, j)]);
             g->gid[G(i, j)] = (*next_id)++;
         }
 #undef G

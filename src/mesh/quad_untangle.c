@@ -191,7 +191,7 @@ sq_status qm_relax(const cad_face *face, const sq_face_info *info, qm_vmesh *v, 
     for (int i = 0; i < v->nv; i++)
         fixed[i] = (keep && keep[i]) || (!bnd[i] && deg[i] != 4 && !move_singular) ||
                    (bnd[i] && at_face_corner(info, &v->xy[2 * i]));
-    double far = opt->size > 0.0 ? opt->size : sq_mesher_default_size(info->area);
+    double far = sq_mesher_size(opt, info->area);
     sq_relax_mesh rm = {v->nv,         v->nq, v->xy,          v->quad,          v->side_tag, fixed,
                         move_singular, 0,     opt->progress, opt->sizes, far};
     sq_status st = sq_quad_relax(face, &rm, work, err);

@@ -42,22 +42,14 @@ static void side_measure(const sq_quad_mesh *m, const sq_size_field *f, double f
     }
 }
 
-static int cmp_int(const void *a, const void *b)
-{
-    int x = *(const int *)a, y = *(const int *)b;
-    return (x > y) - (x < y);
-}
-
 /* The distinct patches of the quads along CAD edge t (p: scratch, one per
  * boundary side). */
 static int patches_along(const sq_quad_mesh *m, int t, int *p)
 {
-    int n = 0, d = 0;
+    int n = 0;
     for (int b = 0; b < m->nbnd; b++)
         if (m->bnd_tag[b] == t) p[n++] = m->patch[m->bnd_quad[b]];
-    qsort(p, (size_t)n, sizeof(int), cmp_int);
-    for (int i = 0; i < n; i++) d += i == 0 || p[i] != p[i - 1];
-    return d;
+    return sq_sort_unique(p, n);
 }
 
 static void edge_sizes(const sq_quad_mesh *m, const sq_size_field *f, double far, int t,
