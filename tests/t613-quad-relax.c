@@ -12,7 +12,7 @@
  * below), and bounds on the work on a thin face's mesh (strip below). */
 #include "cad.h"
 #include "quad_relax.h"
-#include "test_util.h"
+#include "test_face.h"
 
 #define NU 6
 #define NV 4
@@ -166,13 +166,10 @@ static int strip(const cad_face *f)
 
 int main(void)
 {
-    char path[4096];
-    sq_test_path(path, sizeof path, 0, "square.step");
     cad_model *model = NULL;
     cad_face *f = NULL;
     sq_error err;
-    SQ_TEST_OK(cad_model_read(path, &model, &err), err);
-    SQ_TEST_OK(cad_face_create(model, 0, &f, &err), err);
+    sq_test_open_face("square.step", &model, &f);
     int nv = (NU + 1) * (NV + 1), nq = NU * NV, fails = 0;
     double xy[2 * (NU + 1) * (NV + 1)];
     int quad[4 * NU * NV], tag[4 * NU * NV], fixed[(NU + 1) * (NV + 1)];
@@ -247,9 +244,7 @@ int main(void)
     fails += strip(f);
     cad_face_free(&f);
     cad_model_free(&model);
-    sq_test_path(path, sizeof path, 0, "square_hole.step");
-    SQ_TEST_OK(cad_model_read(path, &model, &err), err);
-    SQ_TEST_OK(cad_face_create(model, 0, &f, &err), err);
+    sq_test_open_face("square_hole.step", &model, &f);
     fails += ring(f, 0.3, 0.0, 1, 0);
     fails += ring(f, 0.5, -0.4, 0, 1);
     fails += ring(f, 0.5, 0.0, 0, 0);

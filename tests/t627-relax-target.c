@@ -17,7 +17,7 @@
 #include "cad.h"
 #include "quad_relax.h"
 #include "size_field.h"
-#include "test_util.h"
+#include "test_face.h"
 
 #define NU 8
 #define NV 4
@@ -76,13 +76,10 @@ static int all_convex(const double *xy, const int *quad, int nq)
 
 int main(void)
 {
-    char path[4096];
-    sq_test_path(path, sizeof path, 0, "square.step");
     cad_model *model = NULL;
     cad_face *f = NULL;
     sq_error err;
-    SQ_TEST_OK(cad_model_read(path, &model, &err), err);
-    SQ_TEST_OK(cad_face_create(model, 0, &f, &err), err);
+    sq_test_open_face("square.step", &model, &f);
     int quad[4 * NU * NV], tag[4 * NU * NV], fixed[NVX], fails = grid_topology(f, quad, tag, fixed);
     double graded[2 * NVX], xy[2 * NVX];
     const double r = 1.3;
