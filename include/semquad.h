@@ -213,6 +213,10 @@ typedef struct {
      * match). The mesh's nodes on B are the images of A's. */
     const char *periodic;
     double size_gradation; /* bound g > 1 of neighbours' size ratio (default 1.3) */
+    /* Curvature sizes (docs/sizes.md): N elements per radian of the CAD
+     * curves' turning, h = 1 / (N kappa) on a curve, growing away from it
+     * as a size source does; 0: none (default) */
+    double curvature_elements;
     const char *nodes;  /* "gll" (default) or "equispaced" */
     double max_quads;   /* refuse sizes giving more quads (default 2e7) */
     int nbl;            /* boundary layers on the CAD edges bl_edges[nbl] (0: none) */

@@ -92,7 +92,7 @@ int main(void)
     /* 1. the graded grid: a fixed point of the targets, not of Winslow */
     sq_size_source whole = {.kind = SQ_SIZE_POINT, .x = {0.5, 0.5}, .r = 0.0, .h = 1.0};
     sq_size_field *sizes = NULL;
-    SQ_TEST_OK(sq_size_field_create(f, &whole, 1, 1.3, &sizes, &err), err);
+    SQ_TEST_OK(sq_size_field_create(f, &whole, 1, 1.3, 0.0, &sizes, &err), err);
     memcpy(xy, graded, sizeof xy);
     sq_relax_mesh m = {NVX, NU * NV, xy, quad, tag, fixed};
     m.sizes = sizes;
@@ -116,7 +116,7 @@ int main(void)
 
     /* 2. a refinement at the centre, on the uniform grid */
     sq_size_source centre = {.kind = SQ_SIZE_POINT, .x = {0.5, 0.5}, .r = 0.05, .h = 0.05};
-    SQ_TEST_OK(sq_size_field_create(f, &centre, 1, 1.3, &sizes, &err), err);
+    SQ_TEST_OK(sq_size_field_create(f, &centre, 1, 1.3, 0.0, &sizes, &err), err);
     for (int j = 0; j <= NV; j++)
         for (int i = 0; i <= NU; i++) {
             xy[2 * ID(i, j)] = (double)i / NU;

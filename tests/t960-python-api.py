@@ -111,6 +111,18 @@ with semquad.open(os.path.join(examples, "half_disc.step")) as model:
             key = [k for k in opts if k != "field"][0]
             if e.status != 2 or not str(e).startswith(key + " "):
                 fail("%s: status %d (%s)" % (opts, e.status, e))
+    # curvature sizes (docs/sizes.md): more quads on the half disc's arc
+    # at 8 per radian (25 chords) than at the far size 1 (4), and a
+    # negative count refused
+    if len(model.face().mesh(size=1, curvature=8).elements) <= len(
+            model.face().mesh(size=1).elements):
+        fail("curvature=8 adds no quads")
+    try:
+        model.face().mesh(curvature=-1)
+        fail("curvature -1 accepted")
+    except semquad.Error as e:
+        if e.status != 2 or not str(e).startswith("curvature_elements "):
+            fail("curvature -1: status %d (%s)" % (e.status, e))
 try:
     semquad.open(os.path.join(examples, "half_disc.step"), heal_tolerance=-1e-6)
     fail("heal_tolerance -1e-6 accepted")

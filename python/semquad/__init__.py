@@ -57,7 +57,7 @@ class _Options(ctypes.Structure):
         ("road", ctypes.c_char_p), ("order", ctypes.c_int), ("size", ctypes.c_double),
         ("nsizes", ctypes.c_int), ("sizes", ctypes.c_void_p),
         ("nnames", ctypes.c_int), ("names", ctypes.c_void_p), ("periodic", ctypes.c_char_p),
-        ("size_gradation", ctypes.c_double),
+        ("size_gradation", ctypes.c_double), ("curvature_elements", ctypes.c_double),
         ("nodes", ctypes.c_char_p), ("max_quads", ctypes.c_double),
         ("nbl", ctypes.c_int), ("bl_edges", ctypes.POINTER(ctypes.c_int)),
         ("bl_first", ctypes.c_double), ("bl_ratio", ctypes.c_double), ("bl_layers", ctypes.c_int),
@@ -342,13 +342,14 @@ class Face:
     def mesh(self, order=4, size=None, road="auto", field="auto", singularities=None,
              nodes="gll", max_quads=None, field_order=None, method=None, merge_distance=None,
              allow_misaligned=False, bl_edges=None, bl_first=None, bl_ratio=None,
-             bl_layers=None, log=None):
+             bl_layers=None, curvature=None, log=None):
         """High-order quad mesh of order `order` (1..10), quads of about
         `size` (None: sqrt(area)/8, halved while curved quads fold), by
         `road` ("auto", "layout", "split"), field "auto" or "htheta" (with
         `singularities`: "natural" or a pattern file), nodes "gll" or
         "equispaced"; boundary layers on CAD edges `bl_edges` (bl_first,
-        bl_ratio, bl_layers).  log(level, line) receives progress lines
+        bl_ratio, bl_layers); `curvature` elements per radian of the CAD
+        curves' turning (docs/sizes.md).  log(level, line) receives progress lines
         (level 0 info, 1 note, 2 warning).  Options as `semquad mesh`
         (semquad help); a bad value raises Error with status 2."""
         st, h, err = self._run(_lib.sq_face_mesh, dict(
@@ -356,7 +357,7 @@ class Face:
             nodes=nodes, max_quads=max_quads, field_order=field_order, method=method,
             merge_distance=merge_distance, allow_misaligned=bool(allow_misaligned),
             bl_edges=bl_edges, bl_first=bl_first, bl_ratio=bl_ratio, bl_layers=bl_layers,
-            log=log))
+            curvature_elements=curvature, log=log))
         _check(st, err)
         return Mesh(h, self.model)
 

@@ -126,6 +126,7 @@ sq_status sq_api_mesher_options(const sq_options *o, sq_mesher_options *mo, sq_e
     if (o->nsizes < 0 || (o->nsizes > 0 && !o->sizes))
         return SQ_FAIL(err, SQ_ERR_USAGE, "sizes: nsizes %d without a list", o->nsizes);
     SQ_TRY(sq_size_sources_check(o->sizes, o->nsizes, o->size_gradation, err));
+    SQ_TRY(sq_size_curvature_check(o->curvature_elements, err));
     if (!o->nodes || !strcmp(o->nodes, "gll"))
         mo->nodes = SQ_NODES_GLL;
     else if (!strcmp(o->nodes, "equispaced"))

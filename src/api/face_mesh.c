@@ -404,9 +404,9 @@ sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
     /* a size that would exhaust memory is refused before any work */
     if (st == SQ_OK && o->size > 0.0)
         st = sq_mesher_check_size(h->info.area, mo.size, mo.max_quads, err);
-    if (st == SQ_OK && o->nsizes > 0)
-        st = sq_size_field_create(h->face.cad, o->sizes, o->nsizes, o->size_gradation, &h->sizes,
-                                  err);
+    if (st == SQ_OK && (o->nsizes > 0 || o->curvature_elements > 0.0))
+        st = sq_size_field_create(h->face.cad, o->sizes, o->nsizes, o->size_gradation,
+                                  o->curvature_elements, &h->sizes, err);
     mo.sizes = h->sizes;
     if (st == SQ_OK && o->periodic && !held_edges) st = periodic_find(h, &mo, o, err);
     if (st == SQ_OK) st = run_roads(h, road, &lo, &mo, o, err);

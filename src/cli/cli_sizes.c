@@ -92,7 +92,7 @@ static sq_status size_line(const char *path, int lineno, char *line, sq_cli_args
     int off = 0;
     if (sscanf(line, " %31s %n", kind, &off) < 1) return SQ_OK; /* blank */
     static const struct { const char *kind; int n; } kinds[] = {
-        {"edge", 2}, {"grow", 3}, {"point", 4}, {"box", 5}, {"gradation", 1}};
+        {"edge", 2}, {"grow", 3}, {"point", 4}, {"box", 5}, {"gradation", 1}, {"curvature", 1}};
     char where[320];
     snprintf(where, sizeof where, "%.256s:%d", path, lineno);
     for (size_t i = 0; i < sizeof kinds / sizeof kinds[0]; i++) {
@@ -100,15 +100,22 @@ static sq_status size_line(const char *path, int lineno, char *line, sq_cli_args
         double v[5];
         if (!numbers(line + off, " \t", v, kinds[i].n))
             return SQ_FAIL(err, SQ_ERR_USAGE, "%s: '%s' expects %d numbers", where, kind, kinds[i].n);
-        if (kinds[i].n == 1) {
+        if (!strcmp(kind, "gradation")) {
             if (!(v[0] > 1.0))
                 return SQ_FAIL(err, SQ_ERR_USAGE, "%s: gradation %g, expects > 1", where, v[0]);
             a->opt.size_gradation = v[0];
             return SQ_OK;
         }
+        if (!strcmp(kind, "curvature")) {
+            if (!(v[0] >= 0.0 && v[0] <= 1e6))
+                return SQ_FAIL(err, SQ_ERR_USAGE, "%s: curvature %g elements per radian, expects "
+                               "0..1e6", where, v[0]);
+            a->opt.curvature_elements = v[0];
+            return SQ_OK;
+        }
         return add_source(where, kind, v, kinds[i].n, a, err);
     }
-    return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown size kind '%s' (edge, grow, point, box, gradation)",
+    return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown size kind '%s' (edge, grow, point, box, gradation, curvature)",
                    where, kind);
 }
 

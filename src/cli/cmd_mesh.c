@@ -122,6 +122,11 @@ static const sq_cli_opt mesh_opts[] = {
     {.name = "refine-box", .kind = SQ_CLI_CUSTOM, .value = "X0,Y0,X1,Y1,H", .def = "none",
      .unit = "file unit", .help = "size H inside the box (X0,Y0)-(X1,Y1), growing outside",
      .parse = sq_cli_parse_size},
+    {.name = "curvature", .kind = SQ_CLI_REAL, .value = "N", .lo = 0.0, .hi = 1e6, .def = "0 (none)",
+     .unit = "elements per radian",
+     .help = "size 1/(N kappa) on the CAD curves (N elements per radian of turning), growing "
+             "away by the gradation",
+     .target = SQ_CLI_AT(opt.curvature_elements)},
     {.name = "sizes", .kind = SQ_CLI_CUSTOM, .value = "FILE", .def = "none",
      .help = "size sources, one per line (docs/sizes.md)", .parse = sq_cli_parse_size_file},
     {.name = "names", .kind = SQ_CLI_CUSTOM, .value = "FILE", .def = "none",

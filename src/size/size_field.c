@@ -1,6 +1,6 @@
 /* semquad — the size field h(x) (size_field.h): a minimum of linear
  * distance–threshold contributions, as Gmsh's Distance + Threshold fields
- * with a gradation bound. */
+ * with a gradation bound, and of the CAD curves' curvature sizes. */
 #include "size_field.h"
 
 #include <float.h>
@@ -17,9 +17,18 @@ typedef struct {
     double *poly; /* SQ_SIZE_EDGE: EDGE_SAMPLES + 1 points */
 } source;
 
+/* A curved CAD edge's curvature sizes: polyline points and the size
+ * 1 / (N |kappa|) at each (HUGE_VAL where the edge is straight). */
+typedef struct {
+    double *poly, *h;
+} curved_edge;
+
 struct sq_size_field {
     int n;
     source *src;
+    int ncurved;
+    curved_edge *curved;
+    double slope; /* growth away from the curves: g - 1 */
 };
 
 sq_status sq_size_sources_check(const sq_size_source *src, int n, double gradation, sq_error *err)
@@ -60,6 +69,15 @@ sq_status sq_size_sources_check(const sq_size_source *src, int n, double gradati
     return SQ_OK;
 }
 
+sq_status sq_size_curvature_check(double per_radian, sq_error *err)
+{
+    if (!(per_radian >= 0.0 && isfinite(per_radian)))
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "curvature_elements %g: expects a number >= 0 (elements per radian)",
+                       per_radian);
+    return SQ_OK;
+}
+
 static sq_status sample_edge(const cad_face *face, int edge, double **poly, sq_error *err)
 {
     double len = cad_face_edge_length(face, edge);
@@ -71,11 +89,62 @@ static sq_status sample_edge(const cad_face *face, int edge, double **poly, sq_e
     return SQ_OK;
 }
 
+/* Edge `edge`'s curvature sizes 1 / (N |kappa|) at its polyline's points
+ * into c; c->poly stays NULL when the edge is straight throughout. */
+static sq_status curvature_sizes(const cad_face *face, int edge, double per_radian,
+                                 curved_edge *c, sq_error *err)
+{
+    double len = cad_face_edge_length(face, edge);
+    double *poly = malloc(sizeof(double) * 2 * (EDGE_SAMPLES + 1));
+    double *h = malloc(sizeof(double) * (EDGE_SAMPLES + 1));
+    if (!poly || !h) {
+        free(poly), free(h);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    int curved = 0;
+    for (int k = 0; k <= EDGE_SAMPLES; k++) {
+        double kappa;
+        sq_status st = cad_face_edge_eval(face, edge, len * k / EDGE_SAMPLES, &poly[2 * k], NULL,
+                                          &kappa, err);
+        if (st != SQ_OK) {
+            free(poly), free(h);
+            return st;
+        }
+        /* a radius beyond 1e12 lengths of the edge is a straight line's
+         * round-off */
+        int bent = fabs(kappa) * len > 1e-12;
+        h[k] = bent ? 1.0 / (per_radian * fabs(kappa)) : HUGE_VAL;
+        curved |= bent;
+    }
+    if (!curved) {
+        free(poly), free(h);
+        return SQ_OK;
+    }
+    c->poly = poly, c->h = h;
+    return SQ_OK;
+}
+
+/* The curvature sizes of every curved edge of face into f. */
+static sq_status curvature_field(const cad_face *face, double per_radian, sq_size_field *f,
+                                 sq_error *err)
+{
+    int ne = cad_face_num_edges(face);
+    if (!(f->curved = calloc((size_t)ne + 1, sizeof *f->curved)))
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int e = 0; e < ne; e++) {
+        SQ_TRY(curvature_sizes(face, e, per_radian, &f->curved[f->ncurved], err));
+        if (f->curved[f->ncurved].poly) f->ncurved++;
+    }
+    return SQ_OK;
+}
+
 sq_status sq_size_field_create(const cad_face *face, const sq_size_source *src, int n,
-                               double gradation, sq_size_field **out, sq_error *err)
+                               double gradation, double per_radian, sq_size_field **out,
+                               sq_error *err)
 {
     *out = NULL;
     SQ_TRY(sq_size_sources_check(src, n, gradation, err));
+    SQ_TRY(sq_size_curvature_check(per_radian, err));
     for (int i = 0; i < n; i++)
         if (src[i].kind == SQ_SIZE_EDGE && src[i].edge >= cad_face_num_edges(face))
             return SQ_FAIL(err, SQ_ERR_USAGE, "size source %d: edge %d, the face has edges 0..%d",
@@ -86,7 +155,8 @@ sq_status sq_size_field_create(const cad_face *face, const sq_size_source *src, 
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
     f->n = n;
-    sq_status st = SQ_OK;
+    f->slope = gradation - 1.0;
+    sq_status st = per_radian > 0.0 ? curvature_field(face, per_radian, f, err) : SQ_OK;
     for (int i = 0; i < n && st == SQ_OK; i++) {
         source *s = &f->src[i];
         s->s = src[i];
@@ -103,7 +173,9 @@ void sq_size_field_free(sq_size_field **f)
 {
     if (!f || !*f) return;
     for (int i = 0; i < (*f)->n; i++) free((*f)->src[i].poly);
+    for (int i = 0; i < (*f)->ncurved; i++) free((*f)->curved[i].poly), free((*f)->curved[i].h);
     free((*f)->src);
+    free((*f)->curved);
     free(*f);
     *f = NULL;
 }
@@ -136,6 +208,29 @@ static double source_distance(const source *s, const double x[2])
     }
 }
 
+/* The least of h_k + slope |x - p_k| over the curve c, h linear along its
+ * segments where both ends have one. */
+static double curvature_eval(const curved_edge *c, double slope, const double x[2])
+{
+    double best = HUGE_VAL;
+    for (int k = 0; k < EDGE_SAMPLES; k++) {
+        const double *a = &c->poly[2 * k];
+        double ha = c->h[k], hb = c->h[k + 1];
+        if (ha == HUGE_VAL && hb == HUGE_VAL) continue;
+        if (ha == HUGE_VAL || hb == HUGE_VAL) { /* the curved end alone */
+            const double *p = ha == HUGE_VAL ? a + 2 : a;
+            best = fmin(best, fmin(ha, hb) + slope * hypot(x[0] - p[0], x[1] - p[1]));
+            continue;
+        }
+        double dx = a[2] - a[0], dy = a[3] - a[1], l2 = dx * dx + dy * dy;
+        double t = l2 > 0.0 ? ((x[0] - a[0]) * dx + (x[1] - a[1]) * dy) / l2 : 0.0;
+        t = fmin(fmax(t, 0.0), 1.0);
+        double d = hypot(x[0] - a[0] - t * dx, x[1] - a[1] - t * dy);
+        best = fmin(best, ha + t * (hb - ha) + slope * d);
+    }
+    return best;
+}
+
 double sq_size_field_eval(const sq_size_field *f, const double x[2], double far)
 {
     double h = far;
@@ -143,5 +238,6 @@ double sq_size_field_eval(const sq_size_field *f, const double x[2], double far)
         const source *s = &f->src[i];
         h = fmin(h, s->s.h + s->slope * source_distance(s, x));
     }
+    for (int i = 0; i < f->ncurved; i++) h = fmin(h, curvature_eval(&f->curved[i], f->slope, x));
     return h;
 }

@@ -14,11 +14,15 @@
 typedef struct sq_size_field sq_size_field;
 
 /* The field of sources src[n] on face (CAD edges sampled into polylines,
- * so evaluation needs no CAD call); gradation g > 1.  SQ_ERR_USAGE naming
- * the first bad source (an edge the face lacks, a non-positive size,
- * radius or box, a ratio below 1). */
+ * so evaluation needs no CAD call); gradation g > 1.  per_radian N > 0
+ * adds the curvature sizes: at a point of a CAD edge where the curvature
+ * is kappa, h = 1 / (N |kappa|) (N elements per radian of turning),
+ * growing by g - 1 per unit distance away from the edge; 0: none.
+ * SQ_ERR_USAGE naming the first bad source (an edge the face lacks, a
+ * non-positive size, radius or box, a ratio below 1) or a bad N. */
 sq_status sq_size_field_create(const cad_face *face, const sq_size_source *src, int n,
-                               double gradation, sq_size_field **out, sq_error *err);
+                               double gradation, double per_radian, sq_size_field **out,
+                               sq_error *err);
 void sq_size_field_free(sq_size_field **f); /* NULL-safe, NULLs *f */
 
 /* h(x): the minimum of `far` (the uniform size) and every source's size at
@@ -28,5 +32,9 @@ double sq_size_field_eval(const sq_size_field *f, const double x[2], double far)
 /* SQ_ERR_USAGE naming the first bad source of src[n] (the checks of
  * sq_size_field_create that need no face). */
 sq_status sq_size_sources_check(const sq_size_source *src, int n, double gradation, sq_error *err);
+
+/* SQ_ERR_USAGE unless per_radian (elements per radian) is finite and
+ * >= 0. */
+sq_status sq_size_curvature_check(double per_radian, sq_error *err);
 
 #endif
