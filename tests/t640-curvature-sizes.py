@@ -1,4 +1,4 @@
-"""t631: curvature sizes (docs/sizes.md, issue 24): --curvature N sets
+"""t640: curvature sizes (docs/sizes.md, issue 24): --curvature N sets
 h = 1 / (N kappa) on the CAD curves, growing away from them by the
 gradation g (slope g - 1), capped by the far size.
 
@@ -26,7 +26,7 @@ diameter, edge 0), --curvature 8 --size 1, g = 1.3 (the default):
 4. The size file line "curvature 8" gives the same mesh, byte for byte,
    and a bad count is refused (exit 2, one line, no file).
 5. All quads valid.
-Usage: t631-curvature-sizes.py SEMQUAD EXAMPLES"""
+Usage: t640-curvature-sizes.py SEMQUAD EXAMPLES"""
 import json
 import math
 import os
