@@ -238,7 +238,23 @@ typedef struct {
     void *log_data;
     sq_progress_fn progress; /* NULL: no progress events (default) */
     void *progress_data;
+
+    /* Large meshes (appended: fields above keep their places) */
+    int threads; /* threads for refinement, quality and writing; 0: the
+                    processors online (default).  Files are byte-identical
+                    for every count. */
+    /* The relaxation's largest mesh (default SQ_RELAX_MAX_QUADS): a layout
+     * road mesh of more quads is relaxed with every chord's count divided
+     * by 2^k, the least k giving at most this many quads, and its quads
+     * then split 2 x 2 k times along their own maps (sq_mesh_refine's
+     * nested refinement, new boundary nodes on the CAD curves); 0: always
+     * relax the whole mesh.  docs/mesh.md, "Large meshes". */
+    double relax_max_quads;
 } sq_options;
+
+/* The default of sq_options.relax_max_quads: meshes of up to this many
+ * quads are relaxed whole (about 4 kB a quad while relaxing). */
+#define SQ_RELAX_MAX_QUADS 5e4
 
 /* The default quality floor: the examples' worst quads at the default
  * size lie at 0.057 (naca0012) and above (docs/conventions.md, "Quality"). */

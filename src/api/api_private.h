@@ -77,6 +77,7 @@ struct sq_mesh {
     double *xyz, *sjac, *eta;
     int *bnd;
     int nbl;              /* boundary layers asked for (sq_options.nbl), for the blame */
+    int threads;          /* sq_options.threads, for the quality */
     sq_size_field *sizes; /* the user's sizes (NULL: none), read by the mesher */
     double far_size;      /* the size the mesh was made at (--size, or the default) */
     sq_periodic per;      /* --periodic pairs (npairs 0: none) */

@@ -67,7 +67,7 @@ sq_status sq_api_mesh_quality(sq_mesh *h, sq_error *err)
     h->sjac = malloc(n * sizeof *h->sjac);
     h->eta = malloc(n * sizeof *h->eta);
     if (!h->sjac || !h->eta) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    return sq_quad_mesh_quality(h->q, h->eta, h->sjac, &h->quality, err);
+    return sq_quad_mesh_quality(h->q, h->eta, h->sjac, h->threads, &h->quality, err);
 }
 
 /* Mesh by `mesh(ctx, &m)` at mo's size; without a size the default,
@@ -392,6 +392,7 @@ sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
     h->t0 = sq_now();
     h->t.read = model->t_read;
     h->progress = mo.progress;
+    h->threads = o->threads;
     sq_status st = sq_api_face_open(model, face, o, &h->face, err);
     char *healed = NULL;
     if (st == SQ_OK) st = sq_model_heal_summary(model, h->face.index, &healed, err);
