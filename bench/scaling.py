@@ -117,8 +117,11 @@ def run_gmsh(a, tmp, n, size):
     return row
 
 
-def run_quadqs(a, tmp, n, size):
-    msh = os.path.join(tmp, "q.msh")
+def run_quadqs(a, n, size):
+    # quadqs bind-mounts the output's folder into its chroot and leaves it
+    # mounted: the system's temporary folder (mounted by quadqs anyway), not
+    # a folder of ours that is removed afterwards
+    msh = os.path.join(tempfile.gettempdir(), "scaling-quadqs-%d.msh" % os.getpid())
     cmd = shlex.split(a.quadqs) + [a.step, repr(size), msh, "1", "0"]
     rc, so, se, wall, rss = timed(cmd, a.timeout)
     row = {"tool": "Gmsh 4.13 quasi-structured", "target": n, "order": 1, "threads": 1,
@@ -248,7 +251,7 @@ def measure(a):
     targets = [float(x) for x in a.quads.split(",")]
     rows = []
     with tempfile.TemporaryDirectory() as tmp:
-        for order in (int(x) for x in a.orders.split(",")):
+        for order in (int(x) for x in a.orders.split(",") if x):
             for threads in (int(x) for x in a.threads.split(",")):
                 for n in targets:
                     if order > 4 and n > a.order8_max_quads:
@@ -261,7 +264,7 @@ def measure(a):
                 rows.append(run_gmsh(a, tmp, n, math.sqrt(area / n)))
                 print(json.dumps(rows[-1]), file=sys.stderr)
             if a.quadqs and n <= a.quadqs_max_quads:
-                rows.append(run_quadqs(a, tmp, n, math.sqrt(area / n)))
+                rows.append(run_quadqs(a, n, math.sqrt(area / n)))
                 print(json.dumps(rows[-1]), file=sys.stderr)
     load = open("/proc/loadavg").read().split()[:3]
     return {"rows": rows, "nproc": nproc, "area": area, "load": load,
@@ -273,7 +276,7 @@ def main():
     ap.add_argument("--semquad", default=os.environ.get("SEMQUAD", os.path.join(ROOT, "build", "src", "semquad")))
     ap.add_argument("--step", default=os.path.join(ROOT, "examples", "square_hole.step"))
     ap.add_argument("--quads", default="1e3,1e4,1e5,1e6")
-    ap.add_argument("--orders", default="4,8")
+    ap.add_argument("--orders", default="4,8", help="semquad's orders (empty: the peers only)")
     ap.add_argument("--threads", default="1,0", help="thread counts (0: every processor)")
     ap.add_argument("--order8-max-quads", type=float, default=1e5)
     ap.add_argument("--gmsh-max-quads", type=float, default=1e5)

@@ -404,7 +404,8 @@ SQ_API int sq_mesh_order(const sq_mesh *m);
 SQ_API const char *sq_mesh_road(const sq_mesh *m);
 
 /* Nodes: xyz[3k..3k+2], in the mesh's frame (sq_mesh_frame); for a planar
- * face its plane's frame, so z = 0.  Borrowed. */
+ * face its plane's frame, so z = 0.  Borrowed; made on the first call (NULL
+ * if memory runs out). */
 SQ_API int sq_mesh_num_nodes(const sq_mesh *m);
 SQ_API const double *sq_mesh_nodes(const sq_mesh *m);
 /* The frame: origin[3], xdir[3], ydir[3] in the file's coordinates; the
