@@ -197,28 +197,29 @@ COLOURS = ["#1b6ca8", "#d1495b", "#66a182", "#edae49", "#8d5a97", "#00798c", "#4
 
 def svg_plot(rows, nproc, path):
     """Log-log: in-process seconds (mesh + write) against quads, one polyline per series."""
-    W, H, L, R, T, B = 760, 460, 70, 290, 20, 50
+    W, H, L, R, T, B = 900, 460, 70, 340, 20, 50
     pts = [(r["quads"], r["in_process"]) for r in rows if r.get("quads") and r.get("in_process")]
     if not pts:
         return
-    x0, x1 = math.floor(math.log10(min(p[0] for p in pts))), math.ceil(math.log10(max(p[0] for p in pts)))
-    y0 = math.floor(math.log10(max(min(p[1] for p in pts), 1e-3)))
-    y1 = math.ceil(math.log10(max(p[1] for p in pts)))
-    x1, y1 = max(x1, x0 + 1), max(y1, y0 + 1)
+    # a tenth of a decade of margin around the points; grid lines at whole decades
+    x0 = math.log10(min(p[0] for p in pts)) - 0.1
+    x1 = math.log10(max(p[0] for p in pts)) + 0.1
+    y0 = math.log10(min(p[1] for p in pts)) - 0.1
+    y1 = math.log10(max(p[1] for p in pts)) + 0.1
 
     def X(q):
         return L + (math.log10(q) - x0) / (x1 - x0) * (W - L - R)
 
     def Y(t):
-        return H - B - (math.log10(max(t, 10.0 ** y0)) - y0) / (y1 - y0) * (H - T - B)
+        return H - B - (math.log10(t) - y0) / (y1 - y0) * (H - T - B)
 
     s = ['<svg xmlns="http://www.w3.org/2000/svg" width="%d" height="%d" font-family="sans-serif" '
          'font-size="12">' % (W, H), '<rect width="100%" height="100%" fill="white"/>']
-    for e in range(x0, x1 + 1):
+    for e in range(math.ceil(x0), math.floor(x1) + 1):
         s.append('<line x1="%.1f" y1="%d" x2="%.1f" y2="%d" stroke="#ddd"/>' % (X(10 ** e), T, X(10 ** e), H - B))
         s.append('<text x="%.1f" y="%d" text-anchor="middle">10<tspan dy="-6" font-size="9">%d</tspan></text>'
                  % (X(10 ** e), H - B + 18, e))
-    for e in range(y0, y1 + 1):
+    for e in range(math.ceil(y0), math.floor(y1) + 1):
         s.append('<line x1="%d" y1="%.1f" x2="%d" y2="%.1f" stroke="#ddd"/>' % (L, Y(10 ** e), W - R, Y(10 ** e)))
         s.append('<text x="%d" y="%.1f" text-anchor="end">10<tspan dy="-6" font-size="9">%d</tspan></text>'
                  % (L - 6, Y(10 ** e) + 4, e))
