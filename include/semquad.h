@@ -240,9 +240,9 @@ typedef struct {
     void *progress_data;
 
     /* Large meshes (appended: fields above keep their places) */
-    int threads; /* threads for refinement, quality and writing; 0: the
-                    processors online (default).  Files are byte-identical
-                    for every count. */
+    int threads; /* threads for a large mesh's refinement and the quality
+                    pass; 0: the processors online (default).  Files are
+                    byte-identical for every count. */
     /* The relaxation's largest mesh (default SQ_RELAX_MAX_QUADS): a layout
      * road mesh of more quads is relaxed with every chord's count divided
      * by 2^k, the least k giving at most this many quads, and its quads
