@@ -244,9 +244,9 @@ typedef struct {
                     pass; 0: the processors online (default).  Files are
                     byte-identical for every count. */
     /* The relaxation's largest mesh (default SQ_RELAX_MAX_QUADS): a layout
-     * road mesh of more quads is relaxed with every chord's count divided
-     * by 2^k, the least k giving at most this many quads, and its quads
-     * then split 2 x 2 k times along their own maps (sq_mesh_refine's
+     * road mesh of more quads is relaxed with its chords quantized at 2^k
+     * times the size, the least k giving at most this many quads, and its
+     * quads then split 2 x 2 k times along their own maps (sq_mesh_refine's
      * nested refinement, new boundary nodes on the CAD curves); 0: always
      * relax the whole mesh.  docs/mesh.md, "Large meshes". */
     double relax_max_quads;

@@ -1,6 +1,6 @@
 #!/usr/bin/python3
 """Large meshes (docs/mesh.md, "Large meshes"; issue 22): a mesh of more quads
-than --relax-max-quads is relaxed with its chords' counts halved k times and
+than --relax-max-quads is relaxed with its chords quantized at 2^k times the size and
 then split 2 x 2 k times along its quads' own maps; --threads N gives the same
 bytes for every N.  Exercised cheaply with a small threshold on
 examples/square_hole.step (order 4).  No time is asserted.

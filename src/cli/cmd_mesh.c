@@ -177,8 +177,9 @@ static const sq_cli_opt mesh_opts[] = {
      .parse = parse_threads},
     {.name = "relax-max-quads", .kind = SQ_CLI_REAL, .value = "N", .lo = 0.0, .hi = 1e15,
      .def = "5e4",
-     .help = "a layout-road mesh of more quads is relaxed with its chords' counts halved k times "
-             "(the least k giving at most N quads), then split 2 x 2 k times along its quads' maps; "
+     .help = "a layout-road mesh of more quads is relaxed with its chords quantized at 2^k times "
+             "the size (the least k giving at most N quads), then split 2 x 2 k times along its "
+             "quads' maps; "
              "0: relax the whole mesh (docs/mesh.md, Large meshes)",
      .target = SQ_CLI_AT(opt.relax_max_quads)},
     {.name = "road", .kind = SQ_CLI_WORD, .value = "auto|layout|split", .def = "auto",

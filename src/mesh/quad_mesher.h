@@ -23,9 +23,9 @@
  *     failing that the relaxation is skipped;
  *  4. quads of order Q take their (Q+1)^2 nodes from that grid;
  *  5. large meshes: where the quantization gives more than relax_max_quads
- *     quads (and no boundary layers, held edges or periodic pairs), every
- *     chord's count is divided by 2^k, rounded, at least 1, with k the
- *     least giving at most relax_max_quads quads; 1-4 run on that coarse
+ *     quads (and no boundary layers, held edges or periodic pairs), the
+ *     chords are quantized again (design 1) at 2^k times the size, k the
+ *     least giving at most relax_max_quads quads; 2-4 run on that coarse
  *     mesh, whose quads are then split 2 x 2 k times along their own maps
  *     (quad_refine.h: nested, new boundary nodes on the CAD curves, on
  *     opt->threads threads).  The relaxation's result is a smooth map, so
