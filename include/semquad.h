@@ -242,7 +242,23 @@ typedef struct {
     void *log_data;
     sq_progress_fn progress; /* NULL: no progress events (default) */
     void *progress_data;
+
+    /* Large meshes (appended: fields above keep their places) */
+    int threads; /* threads for a large mesh's refinement and the quality
+                    pass; 0: the processors online (default).  Files are
+                    byte-identical for every count. */
+    /* The relaxation's largest mesh (default SQ_RELAX_MAX_QUADS): a layout
+     * road mesh of more quads is relaxed with its chords quantized at 2^k
+     * times the size, the least k giving at most this many quads, and its
+     * quads then split 2 x 2 k times along their own maps (sq_mesh_refine's
+     * nested refinement, new boundary nodes on the CAD curves); 0: always
+     * relax the whole mesh.  docs/mesh.md, "Large meshes". */
+    double relax_max_quads;
 } sq_options;
+
+/* The default of sq_options.relax_max_quads: meshes of up to this many
+ * quads are relaxed whole (about 4 kB a quad while relaxing). */
+#define SQ_RELAX_MAX_QUADS 5e4
 
 /* The default quality floor: the examples' worst quads at the default
  * size lie at 0.057 (naca0012) and above (docs/conventions.md, "Quality"). */
@@ -392,7 +408,8 @@ SQ_API int sq_mesh_order(const sq_mesh *m);
 SQ_API const char *sq_mesh_road(const sq_mesh *m);
 
 /* Nodes: xyz[3k..3k+2], in the mesh's frame (sq_mesh_frame); for a planar
- * face its plane's frame, so z = 0.  Borrowed. */
+ * face its plane's frame, so z = 0.  Borrowed; made on the first call (NULL
+ * if memory runs out). */
 SQ_API int sq_mesh_num_nodes(const sq_mesh *m);
 SQ_API const double *sq_mesh_nodes(const sq_mesh *m);
 /* The frame: origin[3], xdir[3], ydir[3] in the file's coordinates; the

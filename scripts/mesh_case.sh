@@ -20,7 +20,9 @@ shift
 stem=$(basename "$file")
 stem=${stem%.*}
 id=$(printf '%s-%04d' "$stem" "$n")
-"${SEMQUAD:-semquad}" mesh "$file" "$@" -q -o "$out/$id.msh" --report "$out/$id.json" \
+# one thread per run unless the caller says otherwise: the batch runs one
+# process per core already (a case's own --threads still wins)
+SEMQUAD_THREADS=${SEMQUAD_THREADS:-1} "${SEMQUAD:-semquad}" mesh "$file" "$@" -q -o "$out/$id.msh" --report "$out/$id.json" \
     2>"$out/$id.log"
 status=$?
 echo "$status" >"$out/$id.status"

@@ -116,7 +116,7 @@ int main(void)
     sq_quad_mesh *m = NULL;
     SQ_TEST_OK(sq_mesh_layout(f, r.info, &r.layout, &mo, &m, &err), err);
     sq_quad_quality q;
-    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, &q, &err), err);
+    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, 1, &q, &err), err);
     fails += sq_check_int("disc mesh", "irregular interior vertices", q.irregular_interior, 4);
     fails += sq_check_int("disc mesh", "inverted quads", q.inverted, 0);
     if (!(q.min_scaled_jacobian > 0.0)) {

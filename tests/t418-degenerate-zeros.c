@@ -88,7 +88,7 @@ static int run(const char *path, const char *name, const expect *want)
         sq_quad_mesh *m = NULL;
         sq_quad_quality q;
         SQ_TEST_OK(sq_mesh_layout(f, r.info, &r.layout, &mo, &m, &err), err);
-        SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, &q, &err), err);
+        SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, 1, &q, &err), err);
         fails += sq_check_int(name, "interior irregular vertices", q.irregular_interior,
                               want->irregular);
         fails += sq_check_int(name, "inverted quads", q.inverted, 0);

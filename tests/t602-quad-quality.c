@@ -55,7 +55,7 @@ static int check_square(int n, int Q, sq_node_kind kind)
     sq_quad_quality q;
     sq_error err;
     double *eta = malloc(sizeof(double) * m->nquads), *sj = malloc(sizeof(double) * m->nquads);
-    SQ_TEST_OK(sq_quad_mesh_quality(m, eta, sj, &q, &err), err);
+    SQ_TEST_OK(sq_quad_mesh_quality(m, eta, sj, 1, &q, &err), err);
     int f = 0;
     f += sq_check_abs(ctx, "eta mean", q.eta_mean, 1.0, 1e-13);
     f += sq_check_abs(ctx, "eta min", q.eta_min, 1.0, 1e-13);
@@ -89,7 +89,7 @@ static int check_parallelogram(int Q, sq_node_kind kind)
     sq_quad_mesh *m = t6_parallelogram(4, &alpha, Q, kind);
     sq_quad_quality q;
     sq_error err;
-    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, &q, &err), err);
+    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, 1, &q, &err), err);
     int f = 0;
     /* angles 60 and 120 deg: eta = 1 - 30/90 */
     f += sq_check_abs(ctx, "eta mean", q.eta_mean, 2.0 / 3.0, 1e-13);
@@ -113,7 +113,7 @@ static int check_annulus(int n, int Q, sq_node_kind kind)
     sq_quad_mesh *m = t6_annulus(n, Q, kind);
     sq_quad_quality q;
     sq_error err;
-    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, &q, &err), err);
+    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, 1, &q, &err), err);
     int f = 0;
     /* corner polygon of a polar cell: isosceles trapezoid with angles
      * 90 deg +- dtheta/2, dtheta = (pi/2)/n */
@@ -151,7 +151,7 @@ static int check_disc(int n, int Q, sq_node_kind kind)
     sq_quad_mesh *m = t6_quarter_disc(n, Q, kind);
     sq_quad_quality q;
     sq_error err;
-    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, &q, &err), err);
+    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, 1, &q, &err), err);
     int f = 0;
     f += sq_check_int(ctx, "quads", m->nquads, 3 * n * n);
     f += sq_check_int(ctx, "irregular interior", q.irregular_interior, 1);

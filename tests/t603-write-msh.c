@@ -227,7 +227,7 @@ static int check_msh_quad_stats(const char *py, const char *qs, const char *path
     if (rc != 0) return printf("%s: %s failed (%d): %s\n", ctx, cmd, rc, buf), 1;
     sq_quad_quality q;
     sq_error err;
-    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, &q, &err), err);
+    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, 1, &q, &err), err);
     int f = 0, miss = 0;
     f += sq_check_int(ctx, "msh_quad_stats quads", (long)json_num(buf, "quads", &miss), m->nquads);
     /* msh_quad_stats.py recomputes eta from the %.17g nodes: the same

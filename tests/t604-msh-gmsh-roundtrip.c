@@ -28,7 +28,7 @@ int main(int argc, char **argv)
                 sq_quad_mesh *m = which ? t6_quarter_disc(2, Q, kind) : t6_annulus(3, Q, kind);
                 sq_quad_quality q;
                 sq_error err;
-                SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, &q, &err), err);
+                SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, 1, &q, &err), err);
                 char path[256];
                 snprintf(path, sizeof path, "%s/m%d%d%d.msh", dir, Q, k, which);
                 SQ_TEST_OK(sq_write_msh(path, m, NULL, &err), err);

@@ -112,7 +112,7 @@ static int check_invalid(const char *ctx, sq_node_kind kind, int i, int j, doubl
     sq_quad_mesh *m = moved_square(4, kind, i, j, delta);
     sq_quad_quality q;
     sq_error err;
-    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, &q, &err), err);
+    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, 1, &q, &err), err);
     int valid, negative, f = check_bounds(ctx, m, &valid, &negative);
     if (!(q.min_scaled_jacobian_nodes > 0.0)) {
         printf("%s: det J at the nodes %g: the quad was meant valid there\n", ctx,
@@ -134,7 +134,7 @@ static int check_valid(const char *ctx, sq_quad_mesh *m)
 {
     sq_quad_quality q;
     sq_error err;
-    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, &q, &err), err);
+    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, 1, &q, &err), err);
     int f = 0, valid = 1, negative = 0;
     /* every quad, the first one against the dense samples */
     sq_quad_mesh one = *m;

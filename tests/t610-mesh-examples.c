@@ -110,7 +110,7 @@ static int run(const char *file, int Q, double size, int check_area)
     sq_quad_mesh *m = NULL;
     SQ_TEST_OK(sq_mesh_layout(f, r.info, &r.layout, &mo, &m, &err), err);
     sq_quad_quality q;
-    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, &q, &err), err);
+    SQ_TEST_OK(sq_quad_mesh_quality(m, NULL, NULL, 1, &q, &err), err);
     int fails = 0;
     char ctx[128];
     snprintf(ctx, sizeof ctx, "%s Q=%d", file, Q);

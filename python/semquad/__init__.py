@@ -67,7 +67,8 @@ class _Options(ctypes.Structure):
         ("study_nsizes", ctypes.c_int), ("study_sizes", ctypes.POINTER(ctypes.c_double)),
         ("study_geom_order", ctypes.c_int),
         ("log", _LOG_FN), ("log_data", ctypes.c_void_p),
-        ("progress", _PROGRESS_FN), ("progress_data", ctypes.c_void_p)]
+        ("progress", _PROGRESS_FN), ("progress_data", ctypes.c_void_p),
+        ("threads", ctypes.c_int), ("relax_max_quads", ctypes.c_double)]
 
 
 def _find_library():

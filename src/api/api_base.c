@@ -33,6 +33,7 @@ void sq_options_init(sq_options *o)
     o->order = 4;
     o->nodes = "gll";
     o->max_quads = SQ_MAX_QUADS;
+    o->relax_max_quads = SQ_RELAX_MAX_QUADS;
     o->bl_ratio = 1.2;
     o->size_gradation = SQ_SIZE_GRADATION;
     o->min_quality = SQ_MIN_QUALITY;
@@ -134,6 +135,13 @@ sq_status sq_api_mesher_options(const sq_options *o, sq_mesher_options *mo, sq_e
     else
         return SQ_FAIL(err, SQ_ERR_USAGE, "--nodes expects gll or equispaced, got '%s'", o->nodes);
     mo->max_quads = o->max_quads;
+    if (o->threads < 0 || o->threads > 256)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "threads %d: expects 0..256 (0: the processors online)",
+                       o->threads);
+    if (!(o->relax_max_quads >= 0.0 && o->relax_max_quads <= 1e15))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "relax_max_quads %g: expects 0..1e15", o->relax_max_quads);
+    mo->threads = o->threads;
+    mo->relax_max_quads = o->relax_max_quads;
     mo->progress = (sq_progress){o->progress, o->progress_data};
     mo->nbl = o->nbl;
     mo->bl_edges = o->bl_edges;

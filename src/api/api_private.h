@@ -74,9 +74,12 @@ struct sq_mesh {
     double t0;            /* sq_now() when meshing began, for timings.total */
     double *t_write;      /* seconds in sq_mesh_write so far (apart, as t_split) */
     sq_progress progress; /* the caller's, for the "write" events */
-    double *xyz, *sjac, *eta;
+    double **xyz;         /* the nodes in 3D, made by the first sq_mesh_nodes (a million
+                             order-4 quads: 384 MB; apart, as t_write) */
+    double *sjac, *eta;
     int *bnd;
     int nbl;              /* boundary layers asked for (sq_options.nbl), for the blame */
+    int threads;          /* sq_options.threads, for the quality */
     sq_size_field *sizes; /* the user's sizes (NULL: none), read by the mesher */
     double far_size;      /* the size the mesh was made at (--size, or the default) */
     sq_periodic per;      /* --periodic pairs (npairs 0: none) */

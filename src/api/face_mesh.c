@@ -67,7 +67,7 @@ sq_status sq_api_mesh_quality(sq_mesh *h, sq_error *err)
     h->sjac = malloc(n * sizeof *h->sjac);
     h->eta = malloc(n * sizeof *h->eta);
     if (!h->sjac || !h->eta) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    return sq_quad_mesh_quality(h->q, h->eta, h->sjac, &h->quality, err);
+    return sq_quad_mesh_quality(h->q, h->eta, h->sjac, h->threads, &h->quality, err);
 }
 
 /* Mesh by `mesh(ctx, &m)` at mo's size; without a size the default,
@@ -294,14 +294,9 @@ static sq_status run_roads(sq_mesh *h, sq_api_road road, const sq_layout_options
 sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err)
 {
     const sq_quad_mesh *q = h->q;
-    h->xyz = malloc(3 * (size_t)q->nnodes * sizeof *h->xyz);
+    h->xyz = calloc(1, sizeof *h->xyz);
     h->bnd = malloc(3 * (size_t)(q->nbnd ? q->nbnd : 1) * sizeof *h->bnd);
     if (!h->xyz || !h->bnd) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    for (int k = 0; k < q->nnodes; k++) {
-        h->xyz[3 * k] = q->xy[2 * k];
-        h->xyz[3 * k + 1] = q->xy[2 * k + 1];
-        h->xyz[3 * k + 2] = 0.0;
-    }
     for (int s = 0; s < q->nbnd; s++) {
         h->bnd[3 * s] = q->bnd_quad[s];
         h->bnd[3 * s + 1] = q->bnd_side[s];
@@ -392,6 +387,7 @@ sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
     h->t0 = sq_now();
     h->t.read = model->t_read;
     h->progress = mo.progress;
+    h->threads = o->threads;
     sq_status st = sq_api_face_open(model, face, o, &h->face, err);
     char *healed = NULL;
     if (st == SQ_OK) st = sq_model_heal_summary(model, h->face.index, &healed, err);
@@ -464,6 +460,7 @@ void sq_mesh_free(sq_mesh **m)
 {
     if (!m || !*m) return;
     sq_mesh *h = *m;
+    if (h->xyz) free(*h->xyz);
     free(h->xyz);
     free(h->sjac);
     free(h->eta);
@@ -485,7 +482,18 @@ int sq_mesh_face(const sq_mesh *m) { return m->face.index; }
 int sq_mesh_order(const sq_mesh *m) { return m->q->order; }
 const char *sq_mesh_road(const sq_mesh *m) { return m->road.name; }
 int sq_mesh_num_nodes(const sq_mesh *m) { return m->q->nnodes; }
-const double *sq_mesh_nodes(const sq_mesh *m) { return m->xyz; }
+const double *sq_mesh_nodes(const sq_mesh *m)
+{
+    const sq_quad_mesh *q = m->q;
+    if (*m->xyz || !(*m->xyz = malloc(3 * (size_t)(q->nnodes ? q->nnodes : 1) * sizeof **m->xyz)))
+        return *m->xyz;
+    for (int k = 0; k < q->nnodes; k++) {
+        (*m->xyz)[3 * k] = q->xy[2 * k];
+        (*m->xyz)[3 * k + 1] = q->xy[2 * k + 1];
+        (*m->xyz)[3 * k + 2] = 0.0;
+    }
+    return *m->xyz;
+}
 int sq_mesh_num_quads(const sq_mesh *m) { return m->q->nquads; }
 const int *sq_mesh_quads(const sq_mesh *m) { return m->q->conn; }
 int sq_mesh_num_boundary_sides(const sq_mesh *m) { return m->q->nbnd; }

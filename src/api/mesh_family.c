@@ -26,6 +26,7 @@ static sq_status refined_handle(const sq_mesh *m, sq_quad_mesh *q, sq_mesh **out
     h->road = m->road;
     h->progress = m->progress;
     h->nbl = m->nbl;
+    h->threads = m->threads;
     sq_status st = sq_api_face_open(m->face.model, m->face.index, NULL, &h->face, err);
     if (st == SQ_OK) st = sq_face_info_compute(h->face.cad, &h->info, err);
     if (st == SQ_OK) st = sq_api_mesh_quality(h, err);
@@ -62,14 +63,14 @@ sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const sq_optio
     const sq_quad_mesh *from = m->q;
     for (int k = 0; k < levels; k++) {
         sq_quad_mesh *next = NULL;
-        sq_status st = sq_quad_mesh_refine(face, from, 2, m->q->order, &next, err);
+        sq_status st = sq_quad_mesh_refine(face, from, 2, m->q->order, o->threads, &next, err);
         sq_quad_mesh_free(&q);
         if (st != SQ_OK) return st;
         from = q = next;
     }
     if (order != m->q->order || levels == 0) {
         sq_quad_mesh *raised = NULL;
-        sq_status st = sq_quad_mesh_refine(face, from, 1, order, &raised, err);
+        sq_status st = sq_quad_mesh_refine(face, from, 1, order, o->threads, &raised, err);
         sq_quad_mesh_free(&q);
         if (st != SQ_OK) return st;
         q = raised;

@@ -228,6 +228,7 @@ sq_status sq_model_mesh(const sq_model *m, const int *faces, int nfaces, const s
         h->t.read = m->t_read;
         h->road.name = "domain";
         h->nbl = o->nbl;
+        h->threads = o->threads;
     }
     if (st == SQ_OK) st = mesh_domain(m, faces, nfaces, o, h, err);
     if (st == SQ_OK) h->t.mesh = sq_now() - h->t0;

@@ -36,6 +36,7 @@ typedef struct {
     const char *csv;       /* converge --csv F */
     const char *format;    /* mesh --format msh|xml|vtu */
     int binary;            /* mesh --binary: MSH 4.1 binary */
+    int threads_set;       /* mesh --threads given (else SEMQUAD_THREADS, else all) */
     const char *deprecated; /* the deprecated spelling used, warned about once */
     const char *progress;  /* --progress auto|json|none */
     sq_cli_progress bar;   /* its state (opt.progress_data and opt.log_data point here) */

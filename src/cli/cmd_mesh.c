@@ -4,6 +4,7 @@
 #include "cli.h"
 
 #include <stdio.h>
+#include <stdlib.h>
 #include <string.h>
 
 static sq_status parse_bl(const char *opt, const char *val, sq_cli_args *a, sq_error *err)
@@ -15,6 +16,20 @@ static sq_status parse_bl(const char *opt, const char *val, sq_cli_args *a, sq_e
 static sq_status parse_orders(const char *opt, const char *val, sq_cli_args *a, sq_error *err)
 {
     return sq_cli_int_list(opt, val, 1, 10, a->orders, SQ_CLI_MAX_LIST, &a->norders, err);
+}
+
+static sq_status parse_threads(const char *opt, const char *val, sq_cli_args *a, sq_error *err)
+{
+    a->threads_set = 1;
+    return sq_cli_int(opt, val, 0, 256, &a->opt.threads, err);
+}
+
+/* Without --threads, SEMQUAD_THREADS where set (0: every processor). */
+static sq_status threads_from_env(sq_cli_args *a, sq_error *err)
+{
+    const char *env = getenv("SEMQUAD_THREADS");
+    if (a->threads_set || !env || !*env) return SQ_OK;
+    return sq_cli_int("SEMQUAD_THREADS", env, 0, 256, &a->opt.threads, err);
 }
 
 static sq_status parse_faces(const char *opt, const char *val, sq_cli_args *a, sq_error *err)
@@ -70,6 +85,7 @@ static sq_status run_mesh(sq_cli_args *a, sq_error *err)
 {
     char name[4096], manifest[4096];
     int named = a->output != NULL, family = a->levels > 0 || a->norders > 0;
+    SQ_TRY(threads_from_env(a, err));
     SQ_TRY(mesh_file(a, name, sizeof name, err));
     SQ_TRY(sq_cli_family_check(a, manifest, sizeof manifest, err));
     sq_model *m = NULL;
@@ -160,6 +176,17 @@ static const sq_cli_opt mesh_opts[] = {
     {.name = "max-quads", .kind = SQ_CLI_REAL, .value = "N", .lo = 1.0, .hi = 1e15, .def = "2e7",
      .help = "refuse, before meshing, a size giving more quads (and name one that fits)",
      .target = SQ_CLI_AT(opt.max_quads)},
+    {.name = "threads", .kind = SQ_CLI_CUSTOM, .value = "N", .def = "SEMQUAD_THREADS, else every processor",
+     .help = "threads for a large mesh's refinement and the quality pass (0: every processor); "
+             "the files are byte-identical for every N",
+     .parse = parse_threads},
+    {.name = "relax-max-quads", .kind = SQ_CLI_REAL, .value = "N", .lo = 0.0, .hi = 1e15,
+     .def = "5e4",
+     .help = "a layout-road mesh of more quads is relaxed with its chords quantized at 2^k times "
+             "the size (the least k giving at most N quads), then split 2 x 2 k times along its "
+             "quads' maps; "
+             "0: relax the whole mesh (docs/mesh.md, Large meshes)",
+     .target = SQ_CLI_AT(opt.relax_max_quads)},
     {.name = "road", .kind = SQ_CLI_WORD, .value = "auto|layout|split", .def = "auto",
      .help = "layout: field, layout, patches; split: triangles split into quads; auto: layout, "
              "else split, and the better of both when the layout's is below --min-quality",

@@ -133,6 +133,8 @@ void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, i
     sq_json_key_int(&j, "quads", m->nquads);
     sq_json_key_int(&j, "order", m->order);
     sq_json_key_int(&j, "nodes", m->nnodes);
+    /* a large mesh relaxed coarser (docs/mesh.md, "Large meshes") */
+    if (m->relaxed_quads > 0) sq_json_key_int(&j, "relaxed_at_quads", m->relaxed_quads);
     sq_json_key_int(&j, "irregular_interior_vertices", q->irregular_interior);
     sq_json_key_int(&j, "irregular_boundary_vertices", q->irregular_boundary);
     sq_json_key(&j, "quality");

@@ -45,7 +45,7 @@ sq_status sq_write_quad_svg(const char *path, const sq_quad_mesh *m, const sq_pr
     double *eta = malloc(sizeof(double) * (size_t)m->nquads);
     if (!eta) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     sq_quad_quality qq;
-    sq_status st = sq_quad_mesh_quality(m, eta, NULL, &qq, err);
+    sq_status st = sq_quad_mesh_quality(m, eta, NULL, 1, &qq, err);
     sq_outfile f = {0};
     if (st == SQ_OK) st = sq_outfile_open(path, &f, err);
     if (st != SQ_OK) {

@@ -59,7 +59,7 @@ sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m0, const sq_p
     sq_quad_quality qq;
     sq_status st = ij && eta && etac && sj ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     /* quality of the mesh as given (its own nodes) */
-    if (st == SQ_OK && nq) st = sq_quad_mesh_quality(m0, eta, sj, &qq, err);
+    if (st == SQ_OK && nq) st = sq_quad_mesh_quality(m0, eta, sj, 1, &qq, err);
     if (st == SQ_OK && nq) st = sq_quad_mesh_eta_curved(m0, etac, err);
     if (st == SQ_OK) st = sq_outfile_open(path, &f, err);
     if (st != SQ_OK) goto done;

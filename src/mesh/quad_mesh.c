@@ -111,6 +111,23 @@ void sq_quad_basis_eval(const sq_quad_basis *b, double u, double *l, double *dl)
     }
 }
 
+void sq_quad_mesh_point(const sq_quad_mesh *m, int q, const double *lu, const double *lv,
+                        double x[2])
+{
+    int Q = m->order;
+    const int *c = &m->conn[(size_t)q * (Q + 1) * (Q + 1)];
+    double X[2] = {0, 0};
+    for (int j = 0; j <= Q; j++)
+        for (int i = 0; i <= Q; i++) {
+            const double *p = &m->xy[2 * (size_t)c[sq_quad_node(Q, i, j)]];
+            double f = lu[i] * lv[j];
+            X[0] += f * p[0];
+            X[1] += f * p[1];
+        }
+    x[0] = X[0];
+    x[1] = X[1];
+}
+
 void sq_quad_mesh_map(const sq_quad_mesh *m, const sq_quad_basis *b, int q, double u, double v,
                       double x[2], double d[4])
 {
@@ -118,22 +135,20 @@ void sq_quad_mesh_map(const sq_quad_mesh *m, const sq_quad_basis *b, int q, doub
     double lu[11], dlu[11], lv[11], dlv[11];
     sq_quad_basis_eval(b, u, lu, dlu);
     sq_quad_basis_eval(b, v, lv, dlv);
+    sq_quad_mesh_point(m, q, lu, lv, x);
+    if (!d) return;
     const int *c = &m->conn[(size_t)q * (Q + 1) * (Q + 1)];
-    double X[2] = {0, 0}, D[4] = {0, 0, 0, 0};
+    double D[4] = {0, 0, 0, 0};
     for (int j = 0; j <= Q; j++)
         for (int i = 0; i <= Q; i++) {
             const double *p = &m->xy[2 * (size_t)c[sq_quad_node(Q, i, j)]];
-            double f = lu[i] * lv[j], fu = dlu[i] * lv[j], fv = lu[i] * dlv[j];
-            X[0] += f * p[0];
-            X[1] += f * p[1];
+            double fu = dlu[i] * lv[j], fv = lu[i] * dlv[j];
             D[0] += fu * p[0];
             D[1] += fv * p[0];
             D[2] += fu * p[1];
             D[3] += fv * p[1];
         }
-    x[0] = X[0];
-    x[1] = X[1];
-    if (d) memcpy(d, D, sizeof D);
+    memcpy(d, D, sizeof D);
 }
 
 sq_status sq_quad_mesh_resample(const sq_quad_mesh *m, sq_node_kind nodes, sq_quad_mesh **out,
@@ -177,17 +192,17 @@ sq_status sq_quad_mesh_resample(const sq_quad_mesh *m, sq_node_kind nodes, sq_qu
      * side's nodes depend only on that side's old nodes (tensor product), and
      * both parameter sets are symmetric, so the two elements sharing a side
      * give the same new positions (to rounding): each shared node gets the
-     * value of the last element that writes it. */
+     * value of the last element that writes it.  The old basis at the new
+     * parameters is the same for every element: evaluated once. */
+    double L[11][11];
+    for (int i = 0; i <= Q; i++) sq_quad_basis_eval(&from, to.t[i], L[i], NULL);
     for (int q = 0; q < m->nquads; q++) {
         const int *c = &m->conn[(size_t)q * npe];
         for (int j = 0; j <= Q; j++)
             for (int i = 0; i <= Q; i++) {
-                double x[2];
                 int g = c[sq_quad_node(Q, i, j)];
                 if ((i == 0 || i == Q) && (j == 0 || j == Q)) continue; /* corners stay */
-                sq_quad_mesh_map(m, &from, q, to.t[i], to.t[j], x, NULL);
-                r->xy[2 * (size_t)g] = x[0];
-                r->xy[2 * (size_t)g + 1] = x[1];
+                sq_quad_mesh_point(m, q, L[i], L[j], &r->xy[2 * (size_t)g]);
             }
     }
     /* a periodic curve's nodes: its master's images again, not its own

@@ -55,6 +55,9 @@ typedef struct {
     int nperiodic;
     sq_quad_periodic *periodic;
     int periodic_chi, periodic_index, periodic_irregular, periodic_mesh_index;
+    /* a large mesh relaxed coarser (quad_mesher.h design 5): the quads of
+     * the mesh relaxed, this one its 2^k x 2^k refinement; 0: this one */
+    int relaxed_quads;
 } sq_quad_mesh;
 
 /* Periodic links (quad_periodic.c): every link's nodes set to the images
@@ -129,8 +132,9 @@ typedef struct {
 double sq_quad_corner_eta(const double *const c[4]);
 
 /* Per-quad eta[nquads] and sjac[nquads] (either may be NULL) and the
- * summary. */
-sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,
+ * summary, the quads shared among `threads` threads (0: the processors
+ * online); the same numbers for every count (sums in quad order). */
+sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac, int threads,
                                sq_quad_quality *q, sq_error *err);
 
 /* ---- Added with the writers: element maps, resampling, report ---- */
@@ -151,6 +155,11 @@ typedef struct {
 sq_status sq_quad_basis_init(sq_quad_basis *b, int order, sq_node_kind nodes, sq_error *err);
 /* l[Q+1] and (if dl) dl[Q+1] at u. */
 void sq_quad_basis_eval(const sq_quad_basis *b, double u, double *l, double *dl);
+/* x[2] of quad q where the basis takes the values lu[Q+1] in u and lv[Q+1]
+ * in v (sq_quad_basis_eval's, once for many quads): sq_quad_mesh_map's x,
+ * bit for bit. */
+void sq_quad_mesh_point(const sq_quad_mesh *m, int q, const double *lu, const double *lv,
+                        double x[2]);
 /* x[2] and (if d) d[4] = {x_u, x_v, y_u, y_v} of quad q at (u, v). */
 void sq_quad_mesh_map(const sq_quad_mesh *m, const sq_quad_basis *b, int q, double u, double v,
                       double x[2], double d[4]);

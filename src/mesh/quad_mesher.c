@@ -2,6 +2,7 @@
  * quantized, its patches meshed and glued; then, on either road's vertex
  * mesh, untangling, relaxation, boundary layers and order Q. */
 #include "quad_mesher_private.h"
+#include "quad_refine.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -83,7 +84,7 @@ static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh
         if (st == SQ_OK && opt->nbl > 0) st = qm_bl_march(face, opt, v, err);
         if (st == SQ_OK) st = qm_raise_order(face, v, Q, opt->nodes, opt, &m, err);
         sq_quad_quality qq;
-        if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, &qq, err);
+        if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, opt->threads, &qq, err);
         if (st == SQ_OK && qq.min_scaled_jacobian > best_sj) {
             best_sj = qq.min_scaled_jacobian;
             sq_quad_mesh_free(out);
@@ -126,6 +127,45 @@ sq_status sq_mesh_linear_quads(const cad_face *face, const sq_face_info *info,
     return st;
 }
 
+/* Design 5: where the quantization nseg gives more than
+ * opt->relax_max_quads quads, nseg replaced by the quantization at size
+ * 2^k, k the least giving at most that many (RELAX_MAX_LEVELS at most);
+ * *levels = k (0: nseg kept). */
+#define RELAX_MAX_LEVELS 8
+static sq_status coarse_quantization(const sq_layout *L, const double *elen, double size,
+                                     const int *grade, const double *need,
+                                     const sq_mesher_options *opt, int *nseg, int *levels,
+                                     sq_error *err)
+{
+    *levels = 0;
+    double quads = qm_quantized_quads(L, nseg);
+    if (!(opt->relax_max_quads > 0.0) || quads <= opt->relax_max_quads || opt->nbl > 0 ||
+        opt->held_edges)
+        return SQ_OK;
+    while (quads > opt->relax_max_quads && *levels < RELAX_MAX_LEVELS) {
+        ++*levels;
+        SQ_TRY(qm_quantize(L, elen, ldexp(size, *levels), grade, need, opt, nseg, err));
+        quads = qm_quantized_quads(L, nseg);
+    }
+    return SQ_OK;
+}
+
+/* The relaxed coarse mesh *m split 2 x 2 `levels` times (design 5). */
+static sq_status refine_levels(const cad_face *face, int levels, const sq_mesher_options *opt,
+                               sq_quad_mesh **m, sq_error *err)
+{
+    int relaxed = (*m)->nquads;
+    for (int k = 0; k < levels; k++) {
+        sq_quad_mesh *fine = NULL;
+        SQ_TRY(sq_quad_mesh_refine(face, *m, 2, (*m)->order, opt->threads, &fine, err));
+        sq_quad_mesh_free(m);
+        *m = fine;
+        sq_progress_report(&opt->progress, "refine", k + 1, levels);
+    }
+    if (levels > 0) (*m)->relaxed_quads = relaxed;
+    return SQ_OK;
+}
+
 double sq_mesher_default_size(double area) { return sqrt(fabs(area)) / 8.0; }
 
 double sq_mesher_size(const sq_mesher_options *opt, double area)
@@ -158,7 +198,6 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
     if (st == SQ_OK && opt->sizes && !need) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK && need) st = qm_interior_measure(L, face, opt, size, need, err);
     if (st == SQ_OK) st = qm_quantize(L, elen, size, grade, need, opt, nseg, err);
-    free(need);
     /* the quantization can exceed area / size^2 (one segment at least per
      * chord, sides matched): check its own count before allocating */
     double nquads = st == SQ_OK ? qm_quantized_quads(L, nseg) : 0.0;
@@ -167,10 +206,15 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
                      "the layout's chords at size %g give %.3g quads, more than --max-quads %.3g; "
                      "try a size of %.3g or more",
                      size, nquads, opt->max_quads, size * sqrt(nquads / opt->max_quads));
+    int levels = 0;
+    if (st == SQ_OK) st = coarse_quantization(L, elen, size, grade, need, opt, nseg, &levels, err);
+    free(need);
     qm_vmesh v = {0};
     if (st == SQ_OK) st = qm_assemble(L, face, opt, nseg, grade, cum, &v, err);
     if (st == SQ_OK) st = finish(face, info, &v, opt, out, err);
     qm_vmesh_free(&v);
+    if (st == SQ_OK) st = refine_levels(face, levels, opt, out, err);
+    if (st != SQ_OK) sq_quad_mesh_free(out);
     free(nseg);
     free(grade);
     free(elen);

@@ -21,7 +21,17 @@
  *     points may move in that relaxation to even out their angles; if a
  *     curved quad then has a non-positive Jacobian they are held, and
  *     failing that the relaxation is skipped;
- *  4. quads of order Q take their (Q+1)^2 nodes from that grid. */
+ *  4. quads of order Q take their (Q+1)^2 nodes from that grid;
+ *  5. large meshes: where the quantization gives more than relax_max_quads
+ *     quads (and no boundary layers, held edges or periodic pairs), the
+ *     chords are quantized again (design 1) at 2^k times the size, k the
+ *     least giving at most relax_max_quads quads; 2-4 run on that coarse
+ *     mesh, whose quads are then split 2 x 2 k times along their own maps
+ *     (quad_refine.h: nested, new boundary nodes on the CAD curves, on
+ *     opt->threads threads).  The relaxation's result is a smooth map, so
+ *     its sub-maps are as good as relaxing the fine grid, at linear cost
+ *     and a fraction of the memory (CHOLMOD's factor, about 2.3 kB a
+ *     quad, is the largest part of a relaxation). */
 #ifndef SQ_QUAD_MESHER_H
 #define SQ_QUAD_MESHER_H
 
@@ -61,6 +71,11 @@ typedef struct {
      * relaxation move them on no face, so the faces sharing e agree) */
     const sq_edge_points *edge_points;
     const int *held_edges;
+    /* threads for the refinement and the quality (0: the processors online) */
+    int threads;
+    /* a quantization of more quads is relaxed coarser and refined (design
+     * 5); 0: never */
+    double relax_max_quads;
 } sq_mesher_options;
 
 /* 2e7 quads of order 4 take about 10 GB (25 nodes of 16 bytes each, the

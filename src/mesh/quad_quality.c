@@ -15,6 +15,7 @@
 #include "quad_mesh.h"
 
 #include "gauss.h"
+#include "sq_parallel.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -54,12 +55,16 @@ double sq_quad_corner_eta(const double *const c[4])
 
 static const int CORNER[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
-static const double *corner_xy(const sq_quad_mesh *m, int q, int k)
+/* The corner vertex of quad q at corner k. */
+static int corner_vertex(const sq_quad_mesh *m, int q, int k)
 {
     int Q = m->order;
-    size_t npe = (size_t)(Q + 1) * (Q + 1);
-    int g = m->conn[(size_t)q * npe + sq_quad_node(Q, CORNER[k][0] * Q, CORNER[k][1] * Q)];
-    return &m->xy[2 * (size_t)g];
+    return m->conn[(size_t)q * (Q + 1) * (Q + 1) + sq_quad_node(Q, CORNER[k][0] * Q, CORNER[k][1] * Q)];
+}
+
+static const double *corner_xy(const sq_quad_mesh *m, int q, int k)
+{
+    return &m->xy[2 * (size_t)corner_vertex(m, q, k)];
 }
 
 static double signed_area(const sq_quad_mesh *m, int q)
@@ -183,89 +188,108 @@ static int cmp_u64(const void *a, const void *b)
     return x < y ? -1 : x > y;
 }
 
-sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,
-                               sq_quad_quality *qq, sq_error *err)
+/* What one quad's pass finds (the per-quad results the summary reduces in
+ * quad order, so it does not depend on the threads). */
+typedef struct {
+    double eta_curved, sj_nodes, area;
+    double ang[4]; /* straight corner angles, for the vertices' angle sums */
+    int capped;
+    char valid;
+} quad_result;
+
+typedef struct {
+    const sq_quad_mesh *m;
+    const double *D, *gw;
+    const double (*gl)[11], (*gdl)[11];
+    double orient;
+    int ng;
+    double *eta, *sjac;
+    quad_result *res;
+    unsigned long long *keys; /* 4 per quad: its sides' vertex pairs */
+} quality_pass;
+
+/* Area of quad q by Gauss quadrature of det J. */
+static double quad_area(const quality_pass *p, int q)
 {
-    memset(qq, 0, sizeof *qq);
-    int Q = m->order, nq = m->nquads;
-    if (nq == 0) return SQ_FAIL(err, SQ_ERR_USAGE, "quality of an empty mesh");
-    sq_quad_basis b;
-    SQ_TRY(sq_quad_basis_init(&b, Q, m->nodes, err));
-    double D[121], orient = orientation(m);
-    diff_matrix(&b, D);
-    /* Gauss–Legendre on [0,1] for the area */
-    int ng = Q + 1;
-    double gx[12], gw[12], gl[12][11], gdl[12][11];
-    SQ_TRY(sem_gauss_jacobi(ng, 0.0, 0.0, gx, gw, err));
-    for (int p = 0; p < ng; p++) {
-        gx[p] = 0.5 * (gx[p] + 1.0);
-        gw[p] *= 0.5;
-        sq_quad_basis_eval(&b, gx[p], gl[p], gdl[p]);
+    const sq_quad_mesh *m = p->m;
+    int Q = m->order;
+    const int *c = &m->conn[(size_t)q * (Q + 1) * (Q + 1)];
+    double area = 0.0;
+    for (int pv = 0; pv < p->ng; pv++)
+        for (int pu = 0; pu < p->ng; pu++) {
+            double d[4] = {0, 0, 0, 0};
+            for (int j = 0; j <= Q; j++)
+                for (int i = 0; i <= Q; i++) {
+                    const double *x = &m->xy[2 * (size_t)c[sq_quad_node(Q, i, j)]];
+                    double fu = p->gdl[pu][i] * p->gl[pv][j], fv = p->gl[pu][i] * p->gdl[pv][j];
+                    d[0] += fu * x[0];
+                    d[1] += fv * x[0];
+                    d[2] += fu * x[1];
+                    d[3] += fv * x[1];
+                }
+            area += p->gw[pu] * p->gw[pv] * (d[0] * d[3] - d[1] * d[2]);
+        }
+    return area;
+}
+
+/* Quad q's sides as vertex pairs, least vertex in the high bits. */
+static void side_keys(const sq_quad_mesh *m, int q, unsigned long long key[4])
+{
+    for (int k = 0; k < 4; k++) {
+        int v = corner_vertex(m, q, k), w = corner_vertex(m, q, (k + 1) % 4);
+        unsigned long long lo = (unsigned)(v < w ? v : w), hi = (unsigned)(v < w ? w : v);
+        key[k] = lo << 32 | hi;
     }
-    size_t npe = (size_t)(Q + 1) * (Q + 1);
+}
+
+/* Quads [begin, end): eta, curved eta, Jacobian bounds, area. */
+static sq_status quality_range(void *ctx, long begin, long end, sq_error *err)
+{
+    const quality_pass *p = ctx;
+    sq_jac_bezier *jb = NULL;
+    SQ_TRY(sq_jac_bezier_create(p->m->order, p->m->nodes, &jb, err));
+    sq_status st = SQ_OK;
+    for (long q = begin; q < end && st == SQ_OK; q++) {
+        quad_result *r = &p->res[q];
+        straight_angles(p->m, (int)q, p->orient, r->ang);
+        p->eta[q] = eta_of(r->ang);
+        side_keys(p->m, (int)q, &p->keys[4 * q]);
+        double ang[4];
+        curved_angles(p->m, p->D, (int)q, p->orient, ang);
+        r->eta_curved = eta_of(ang);
+        int valid = 0;
+        r->capped = 0;
+        p->sjac[q] = r->sj_nodes = -1.0;
+        st = quad_jacobian(p->m, p->D, jb, (int)q, &p->sjac[q], &r->sj_nodes, &valid, &r->capped,
+                           err);
+        r->valid = (char)valid;
+        r->area = quad_area(p, (int)q);
+    }
+    sq_jac_bezier_free(&jb);
+    return st;
+}
+
+/* Valences and angle sums of the corner vertices (in quad order), the
+ * boundary's by the edges used once (quadstats.py): the vertex counts of
+ * qq.  keys[4 nquads] are sorted here. */
+static sq_status vertex_topology(const quality_pass *p, unsigned long long *keys,
+                                 sq_quad_quality *qq, sq_error *err)
+{
+    const sq_quad_mesh *m = p->m;
+    int nq = m->nquads;
     int *valence = calloc((size_t)m->nnodes + 1, sizeof *valence);
     double *angsum = calloc((size_t)m->nnodes + 1, sizeof *angsum);
     char *bnd = calloc((size_t)m->nnodes + 1, 1);
-    unsigned long long *keys = malloc(4 * (size_t)nq * sizeof *keys);
-    sq_jac_bezier *jb = NULL;
-    sq_status st = SQ_OK;
-    if (!valence || !angsum || !bnd || !keys) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    if (st == SQ_OK) st = sq_jac_bezier_create(Q, m->nodes, &jb, err);
-    double eta_sum = 0.0, etac_sum = 0.0, eta_min = HUGE_VAL, etac_min = HUGE_VAL;
-    double sj_min = HUGE_VAL, sjn_min = HUGE_VAL, area = 0.0;
-    int n_tau = 0, n_tauc = 0, inverted = 0;
-    for (int q = 0; q < nq && st == SQ_OK; q++) {
-        const int *c = &m->conn[(size_t)q * npe];
-        double ang[4], angc[4];
-        straight_angles(m, q, orient, ang);
-        double e = eta_of(ang);
-        curved_angles(m, D, q, orient, angc);
-        double ec = eta_of(angc);
-        if (eta) eta[q] = e;
-        eta_sum += e;
-        etac_sum += ec;
-        eta_min = fmin(eta_min, e);
-        etac_min = fmin(etac_min, ec);
-        n_tau += e > 0.9;
-        n_tauc += ec > 0.9;
-        double s = -1.0, sn = -1.0;
-        int valid = 0;
-        st = quad_jacobian(m, D, jb, q, &s, &sn, &valid, &qq->jacobian_capped, err);
-        if (sjac) sjac[q] = s;
-        if (s < sj_min) sj_min = s, qq->worst_quad = q;
-        sjn_min = fmin(sjn_min, sn);
-        inverted += !valid;
-        /* area by Gauss quadrature of det J */
-        for (int pv = 0; pv < ng; pv++)
-            for (int pu = 0; pu < ng; pu++) {
-                double d[4] = {0, 0, 0, 0};
-                for (int j = 0; j <= Q; j++)
-                    for (int i = 0; i <= Q; i++) {
-                        const double *x = &m->xy[2 * (size_t)c[sq_quad_node(Q, i, j)]];
-                        double fu = gdl[pu][i] * gl[pv][j], fv = gl[pu][i] * gdl[pv][j];
-                        d[0] += fu * x[0];
-                        d[1] += fv * x[0];
-                        d[2] += fu * x[1];
-                        d[3] += fv * x[1];
-                    }
-                area += gw[pu] * gw[pv] * (d[0] * d[3] - d[1] * d[2]);
-            }
-        /* topology of the corner vertices */
+    if (!valence || !angsum || !bnd) {
+        free(valence), free(angsum), free(bnd);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    for (int q = 0; q < nq; q++)
         for (int k = 0; k < 4; k++) {
-            int v = c[sq_quad_node(Q, CORNER[k][0] * Q, CORNER[k][1] * Q)];
-            int w = c[sq_quad_node(Q, CORNER[(k + 1) % 4][0] * Q, CORNER[(k + 1) % 4][1] * Q)];
+            int v = corner_vertex(m, q, k);
             valence[v]++;
-            angsum[v] += ang[k];
-            unsigned long long lo = (unsigned)(v < w ? v : w), hi = (unsigned)(v < w ? w : v);
-            keys[4 * (size_t)q + k] = lo << 32 | hi;
+            angsum[v] += p->res[q].ang[k];
         }
-    }
-    sq_jac_bezier_free(&jb);
-    if (st != SQ_OK) {
-        free(valence), free(angsum), free(bnd), free(keys);
-        return st;
-    }
-    /* edges used once are boundary edges (quadstats.py) */
     size_t ne = 4 * (size_t)nq;
     qsort(keys, ne, sizeof *keys, cmp_u64);
     for (size_t i = 0; i < ne;) {
@@ -290,6 +314,32 @@ sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,
         if (expect < 1) expect = 1;
         qq->irregular_boundary += valence[v] != expect;
     }
+    free(valence), free(angsum), free(bnd);
+    return SQ_OK;
+}
+
+/* The summary from the per-quad results, in quad order. */
+static void reduce(const quality_pass *p, sq_quad_quality *qq)
+{
+    int nq = p->m->nquads;
+    double eta_sum = 0.0, etac_sum = 0.0, eta_min = HUGE_VAL, etac_min = HUGE_VAL;
+    double sj_min = HUGE_VAL, sjn_min = HUGE_VAL, area = 0.0;
+    int n_tau = 0, n_tauc = 0, inverted = 0;
+    for (int q = 0; q < nq; q++) {
+        const quad_result *r = &p->res[q];
+        double e = p->eta[q], ec = r->eta_curved, s = p->sjac[q];
+        eta_sum += e;
+        etac_sum += ec;
+        eta_min = fmin(eta_min, e);
+        etac_min = fmin(etac_min, ec);
+        n_tau += e > 0.9;
+        n_tauc += ec > 0.9;
+        if (s < sj_min) sj_min = s, qq->worst_quad = q;
+        sjn_min = fmin(sjn_min, r->sj_nodes);
+        inverted += !r->valid;
+        qq->jacobian_capped += r->capped;
+        area += r->area;
+    }
     qq->eta_mean = eta_sum / nq;
     qq->eta_min = eta_min;
     qq->tau_percent = 100.0 * n_tau / nq;
@@ -298,12 +348,49 @@ sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,
     qq->tau_curved_percent = 100.0 * n_tauc / nq;
     qq->min_scaled_jacobian = sj_min;
     qq->min_scaled_jacobian_nodes = sjn_min;
-    sq_quad_mesh_map(m, &b, qq->worst_quad, 0.5, 0.5, qq->worst_xy, NULL);
     qq->area = area;
     qq->inverted = inverted;
-    free(valence);
-    free(angsum);
-    free(bnd);
-    free(keys);
-    return SQ_OK;
+}
+
+/* quads per range: a range's Bézier work arrays are set up once */
+#define QUALITY_GRAIN 64
+
+sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac, int threads,
+                               sq_quad_quality *qq, sq_error *err)
+{
+    memset(qq, 0, sizeof *qq);
+    int Q = m->order, nq = m->nquads;
+    if (nq == 0) return SQ_FAIL(err, SQ_ERR_USAGE, "quality of an empty mesh");
+    sq_quad_basis b;
+    SQ_TRY(sq_quad_basis_init(&b, Q, m->nodes, err));
+    double D[121];
+    diff_matrix(&b, D);
+    /* Gauss–Legendre on [0,1] for the area */
+    int ng = Q + 1;
+    double gx[12], gw[12], gl[12][11], gdl[12][11];
+    SQ_TRY(sem_gauss_jacobi(ng, 0.0, 0.0, gx, gw, err));
+    for (int p = 0; p < ng; p++) {
+        gx[p] = 0.5 * (gx[p] + 1.0);
+        gw[p] *= 0.5;
+        sq_quad_basis_eval(&b, gx[p], gl[p], gdl[p]);
+    }
+    quality_pass p = {.m = m, .D = D, .gw = gw, .gl = (const double(*)[11])gl,
+                      .gdl = (const double(*)[11])gdl, .orient = orientation(m), .ng = ng,
+                      .eta = eta ? eta : malloc((size_t)nq * sizeof *eta),
+                      .sjac = sjac ? sjac : malloc((size_t)nq * sizeof *sjac),
+                      .res = malloc((size_t)nq * sizeof *p.res),
+                      .keys = malloc(4 * (size_t)nq * sizeof *p.keys)};
+    sq_status st = p.eta && p.sjac && p.res && p.keys
+                       ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) st = sq_parallel_for(threads, nq, QUALITY_GRAIN, quality_range, &p, err);
+    if (st == SQ_OK) {
+        reduce(&p, qq);
+        st = vertex_topology(&p, p.keys, qq, err);
+    }
+    if (st == SQ_OK) sq_quad_mesh_map(m, &b, qq->worst_quad, 0.5, 0.5, qq->worst_xy, NULL);
+    if (!eta) free(p.eta);
+    if (!sjac) free(p.sjac);
+    free(p.res);
+    free(p.keys);
+    return st;
 }

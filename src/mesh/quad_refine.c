@@ -8,6 +8,7 @@
 
 #include "quad_edges.h"
 #include "quad_mesher_private.h"
+#include "sq_parallel.h"
 
 #include <stdlib.h>
 #include <string.h>
@@ -22,9 +23,11 @@ typedef struct {
     const double *tau;     /* the children's node parameters, [0..Q] */
     int n, Q, N;
     double U[RF_MAXL];     /* lattice parameters in the parent */
+    double LU[RF_MAXL][11]; /* the parent's basis at U[I] */
     sq_quad_edges e;
     int *vid;              /* parent node -> vertex of the refined mesh, or -1 */
     int nv;
+    int threads;           /* for the edges inside the face and the parents */
     sq_quad_mesh *out;
 } refine;
 
@@ -130,7 +133,7 @@ static void fill_parent(refine *r, int q)
     double D[RF_MAXL][RF_MAXL][2], base[RF_MAXL][RF_MAXL][2]; /* [J][I] */
     for (int J = 0; J <= N; J++)
         for (int I = 0; I <= N; I++) {
-            sq_quad_mesh_map(r->m, &r->pb, q, r->U[I], r->U[J], base[J][I], NULL);
+            sq_quad_mesh_point(r->m, q, r->LU[I], r->LU[J], base[J][I]);
             int border = I == 0 || I == N || J == 0 || J == N;
             const double *x = &r->out->xy[2 * (size_t)lattice_node(r, q, I, J)];
             D[J][I][0] = border ? x[0] - base[J][I][0] : 0.0;
@@ -174,6 +177,27 @@ static void boundary_sides(refine *r)
     r->out->ntags = r->m->ntags;
 }
 
+/* Edges [begin, end) inside the face (their owner's map only: the CAD
+ * curves' evaluators are not shared between threads). */
+static sq_status inner_edges(void *ctx, long begin, long end, sq_error *err)
+{
+    refine *r = ctx;
+    for (long f = begin; f < end; f++)
+        if (r->e.tag[f] < 0) SQ_TRY(place_edge(r, (int)f, err));
+    return SQ_OK;
+}
+
+/* Parents [begin, end): each writes its own inner points and children. */
+static sq_status parents(void *ctx, long begin, long end, sq_error *err)
+{
+    (void)err;
+    for (long q = begin; q < end; q++) fill_parent(ctx, (int)q);
+    return SQ_OK;
+}
+
+/* items per range of the threads */
+#define RF_GRAIN 64
+
 static sq_status vertices(refine *r, sq_error *err)
 {
     r->vid = malloc((size_t)(r->m->nnodes ? r->m->nnodes : 1) * sizeof *r->vid);
@@ -203,20 +227,22 @@ static sq_status run(refine *r, sq_error *err)
     for (int k = 0; k < m->nnodes; k++)
         if (r->vid[k] >= 0) memcpy(&r->out->xy[2 * (size_t)r->vid[k]], &m->xy[2 * (size_t)k],
                                    2 * sizeof(double));
-    for (int f = 0; f < r->e.nedges; f++) SQ_TRY(place_edge(r, f, err));
-    for (int q = 0; q < m->nquads; q++) fill_parent(r, q);
+    for (int f = 0; f < r->e.nedges; f++)
+        if (r->e.tag[f] >= 0) SQ_TRY(place_edge(r, f, err));
+    SQ_TRY(sq_parallel_for(r->threads, r->e.nedges, RF_GRAIN, inner_edges, r, err));
+    SQ_TRY(sq_parallel_for(r->threads, m->nquads, RF_GRAIN, parents, r, err));
     boundary_sides(r);
     return SQ_OK;
 }
 
 sq_status sq_quad_mesh_refine(const cad_face *face, const sq_quad_mesh *m, int n, int order,
-                              sq_quad_mesh **out, sq_error *err)
+                              int threads, sq_quad_mesh **out, sq_error *err)
 {
     *out = NULL;
     if (n < 1 || n > RF_MAXN || order < 1 || order > 10)
         return SQ_FAIL(err, SQ_ERR_USAGE, "refinement: %d children per side (1..%d), order %d "
                        "(1..10)", n, RF_MAXN, order);
-    refine r = {.face = face, .m = m, .n = n, .Q = order, .N = n * order};
+    refine r = {.face = face, .m = m, .n = n, .Q = order, .N = n * order, .threads = threads};
     sq_quad_basis cb;
     SQ_TRY(sq_quad_basis_init(&r.pb, m->order, m->nodes, err));
     SQ_TRY(sq_quad_basis_init(&cb, order, m->nodes, err));
@@ -224,6 +250,7 @@ sq_status sq_quad_mesh_refine(const cad_face *face, const sq_quad_mesh *m, int n
     for (int I = 0; I <= r.N; I++) {
         int a = I / order < n ? I / order : n - 1;
         r.U[I] = (a + cb.t[I - a * order]) / n;
+        sq_quad_basis_eval(&r.pb, r.U[I], r.LU[I], NULL);
     }
     sq_status st = run(&r, err);
     sq_quad_edges_free(&r.e);

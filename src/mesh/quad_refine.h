@@ -24,8 +24,10 @@
 #include "cad.h"
 #include "quad_mesh.h"
 
-/* Children per side n (1 or 2), order Q (1..10; nodes placed as m's). */
+/* Children per side n (1 or 2), order Q (1..10; nodes placed as m's);
+ * the parents shared among `threads` threads (0: the processors online),
+ * each writing its own nodes: the same mesh for every count. */
 sq_status sq_quad_mesh_refine(const cad_face *face, const sq_quad_mesh *m, int n, int order,
-                              sq_quad_mesh **out, sq_error *err);
+                              int threads, sq_quad_mesh **out, sq_error *err);
 
 #endif
