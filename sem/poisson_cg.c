@@ -465,27 +465,100 @@ static sq_status cg_elements_copy(cg_state *c, const cg_state *src, sq_error *er
     return SQ_OK;
 }
 
-/* The condensed global matrix of the free dofs, assembled and factored. */
+/* The matrix's pattern and its assembly, column by column, from the
+ * elements of each free dof: elem[eptr[f] .. eptr[f+1]-1] are t nb + i for
+ * the local modes i of elements t (ascending) that are free dof f. */
+typedef struct {
+    long *eptr, *elem, *mark, *ptr, *row;
+} cg_graph;
+
+static void cg_graph_free(cg_graph *g)
+{
+    free(g->eptr);
+    free(g->elem);
+    free(g->mark);
+    free(g->ptr);
+    free(g->row);
+}
+
+/* The lower-triangular pattern of the condensed matrix: column j holds the
+ * free dofs i >= j that share an element with j, found row by row (i
+ * ascending, so each column's rows come out sorted, j first), counted on
+ * a first pass and stored on a second. */
+static sq_status cg_graph_build(const cg_state *c, cg_graph *g, sq_error *err)
+{
+    const int nb = c->nb;
+    const long n = c->nfree, nq = (long)c->mesh->ntris * nb;
+    const long *bmap = c->space->bmap, *gf = c->gfree;
+    g->eptr = calloc((size_t)n + 2, sizeof(long));
+    g->elem = malloc(sizeof(long) * ((size_t)nq + 1));
+    g->mark = malloc(sizeof(long) * (size_t)n);
+    g->ptr = calloc((size_t)n + 2, sizeof(long));
+    if (!g->eptr || !g->elem || !g->mark || !g->ptr)
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_cg: out of memory (pattern)");
+    for (long q = 0; q < nq; ++q)
+        if (gf[bmap[q]] >= 0) g->eptr[gf[bmap[q]] + 2]++;
+    for (long f = 0; f < n; ++f)
+        g->eptr[f + 2] += g->eptr[f + 1];
+    for (long q = 0; q < nq; ++q)
+        if (gf[bmap[q]] >= 0) g->elem[g->eptr[gf[bmap[q]] + 1]++] = q;
+    for (int pass = 0; pass < 2; ++pass) {
+        for (long f = 0; f < n; ++f)
+            g->mark[f] = -1;
+        for (long i = 0; i < n; ++i)
+            for (long p = g->eptr[i]; p < g->eptr[i + 1]; ++p) {
+                const long *map = bmap + g->elem[p] / nb * nb;
+                for (int k = 0; k < nb; ++k) {
+                    const long j = gf[map[k]];
+                    if (j < 0 || j > i || g->mark[j] == i) continue;
+                    g->mark[j] = i;
+                    if (pass == 0)
+                        g->ptr[j + 2]++;
+                    else
+                        g->row[g->ptr[j + 1]++] = i;
+                }
+            }
+        if (pass == 1) break;
+        for (long f = 0; f < n; ++f)
+            g->ptr[f + 2] += g->ptr[f + 1];
+        g->row = malloc(sizeof(long) * ((size_t)g->ptr[n + 1] + 1));
+        if (!g->row) return SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_cg: out of memory (pattern)");
+    }
+    return SQ_OK;
+}
+
+/* The condensed global matrix of the free dofs, assembled in place in its
+ * pattern and factored.  Column j's entries are summed over j's elements
+ * in ascending order, the order an element-by-element assembly of
+ * triplets sums them in: the same matrix, bit for bit. */
 static sq_status cg_assemble(cg_state *c, sq_error *err)
 {
-    const int nb = c->nb, nt = c->mesh->ntris;
+    const int nb = c->nb;
+    const long n = c->nfree;
     const sem_cg_space *sp = c->space;
-    if (c->nfree == 0) return SQ_OK;
-    SQ_TRY(sem_sparse_create(c->nfree, (long)nt * nb * (nb + 1) / 2 + c->nfree, &c->A, err));
-    for (int t = 0; t < nt; ++t) {
-        const double *S = c->S + (size_t)t * nb * nb;
-        const long *map = sp->bmap + (size_t)t * nb;
-        const signed char *sg = sp->bsign + (size_t)t * nb;
-        for (int i = 0; i < nb; ++i) {
-            const long fi = c->gfree[map[i]];
-            if (fi < 0) continue;
-            for (int j = 0; j < nb; ++j) {
-                const long fj = c->gfree[map[j]];
-                if (fj < 0 || fj > fi) continue;
-                SQ_TRY(sem_sparse_add(c->A, fi, fj, sg[i] * sg[j] * S[i * nb + j], err));
+    if (n == 0) return SQ_OK;
+    cg_graph g = {0};
+    sq_status st = cg_graph_build(c, &g, err);
+    if (st == SQ_OK) st = sem_sparse_create_pattern(n, g.ptr, g.row, &c->A, err);
+    double *x = st == SQ_OK ? sem_sparse_values(c->A) : NULL;
+    long *at = g.mark; /* at[i]: where row i of the current column is */
+    for (long j = 0; j < n && st == SQ_OK; ++j) {
+        for (long p = g.ptr[j]; p < g.ptr[j + 1]; ++p)
+            at[g.row[p]] = p;
+        for (long p = g.eptr[j]; p < g.eptr[j + 1]; ++p) {
+            const long t = g.elem[p] / nb;
+            const int jl = (int)(g.elem[p] % nb);
+            const double *S = c->S + (size_t)t * nb * nb;
+            const long *map = sp->bmap + (size_t)t * nb;
+            const signed char *sg = sp->bsign + (size_t)t * nb;
+            for (int i = 0; i < nb; ++i) {
+                const long fi = c->gfree[map[i]];
+                if (fi >= j) x[at[fi]] += sg[i] * sg[jl] * S[i * nb + jl];
             }
         }
     }
+    cg_graph_free(&g);
+    SQ_TRY(st);
     SQ_TRY(sem_sparse_factor(c->A, err));
     c->work.factorizations++;
     return SQ_OK;

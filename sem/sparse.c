@@ -18,8 +18,9 @@ struct sem_sparse {
     int cc_started;
     int assembling;     /* values may be added; no factorization to solve with */
     cholmod_triplet *T; /* triplet assembly under way */
-    cholmod_sparse *A;  /* block assembly, or the pattern of the last factorization */
-    long nblocks;       /* block pattern (0: triplets) */
+    cholmod_sparse *A;  /* block or pattern assembly, or the pattern of the last factorization */
+    int pattern;        /* assembled in a pattern given to sem_sparse_create_pattern */
+    long nblocks;       /* block pattern (0: triplets or a given pattern) */
     int bs;
     sslong *bptr, *brow; /* block columns: as given to sem_sparse_create_blocks */
     cholmod_factor *L;
@@ -69,6 +70,24 @@ sq_status sem_sparse_create(long n, long nnz_hint, sem_sparse **out, sq_error *e
     return SQ_OK;
 }
 
+/* A lower-triangular pattern of n columns (of blocks or of entries):
+ * column j's rows ascending from j itself. */
+static sq_status check_columns(const char *fn, long n, const long *ptr, const long *row,
+                               sq_error *err)
+{
+    if (ptr[0] != 0) return SQ_FAIL(err, SQ_ERR_USAGE, "%s: pointer of column 0 != 0", fn);
+    for (long j = 0; j < n; ++j) {
+        if (ptr[j + 1] <= ptr[j] || row[ptr[j]] != j)
+            return SQ_FAIL(err, SQ_ERR_USAGE, "%s: column %ld does not start with its diagonal",
+                           fn, j);
+        for (long p = ptr[j] + 1; p < ptr[j + 1]; ++p)
+            if (row[p] <= row[p - 1] || row[p] >= n)
+                return SQ_FAIL(err, SQ_ERR_USAGE, "%s: rows of column %ld not ascending in %ld..%ld",
+                               fn, j, j, n - 1);
+    }
+    return SQ_OK;
+}
+
 sq_status sem_sparse_create_blocks(long nblocks, int bs, const long *bptr, const long *brow,
                                    sem_sparse **out, sq_error *err)
 {
@@ -77,20 +96,7 @@ sq_status sem_sparse_create_blocks(long nblocks, int bs, const long *bptr, const
     if (nblocks <= 0 || bs <= 0 || !bptr || !brow || nblocks > 2000000000L / bs)
         return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_create_blocks: %ld blocks of size %d", nblocks,
                        bs);
-    if (bptr[0] != 0) return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_create_blocks: bptr[0] != 0");
-    for (long j = 0; j < nblocks; ++j) {
-        if (bptr[j + 1] <= bptr[j] || brow[bptr[j]] != j)
-            return SQ_FAIL(err, SQ_ERR_USAGE,
-                           "sparse_create_blocks: block column %ld does not start with its "
-                           "diagonal block",
-                           j);
-        for (long p = bptr[j] + 1; p < bptr[j + 1]; ++p)
-            if (brow[p] <= brow[p - 1] || brow[p] >= nblocks)
-                return SQ_FAIL(err, SQ_ERR_USAGE,
-                               "sparse_create_blocks: block rows of column %ld not ascending "
-                               "in %ld..%ld",
-                               j, j, nblocks - 1);
-    }
+    SQ_TRY(check_columns("sparse_create_blocks", nblocks, bptr, brow, err));
     const long n = nblocks * bs, nbe = bptr[nblocks];
     const size_t nnz = (size_t)nblocks * bs * (bs + 1) / 2 + (size_t)(nbe - nblocks) * bs * bs;
     sem_sparse *a = NULL;
@@ -128,6 +134,34 @@ sq_status sem_sparse_create_blocks(long nblocks, int bs, const long *bptr, const
     return SQ_OK;
 }
 
+sq_status sem_sparse_create_pattern(long n, const long *ptr, const long *row, sem_sparse **out,
+                                    sq_error *err)
+{
+    if (!out) return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_create_pattern: NULL output");
+    *out = NULL;
+    if (n <= 0 || !ptr || !row)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_create_pattern: size %ld or no pattern", n);
+    SQ_TRY(check_columns("sparse_create_pattern", n, ptr, row, err));
+    const size_t nnz = (size_t)ptr[n];
+    sem_sparse *a = NULL;
+    SQ_TRY(start(n, &a, err));
+    a->pattern = 1;
+    a->A = cholmod_l_allocate_sparse((size_t)n, (size_t)n, nnz, 1, 1, -1, CHOLMOD_REAL, &a->cc);
+    if (!a->A) {
+        sem_sparse_free(&a);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_create_pattern: out of memory (%zu entries)",
+                       nnz);
+    }
+    sslong *Ap = a->A->p, *Ai = a->A->i;
+    for (long j = 0; j <= n; ++j)
+        Ap[j] = ptr[j];
+    for (size_t p = 0; p < nnz; ++p)
+        Ai[p] = row[p];
+    memset(a->A->x, 0, sizeof(double) * nnz);
+    *out = a;
+    return SQ_OK;
+}
+
 void sem_sparse_free(sem_sparse **pa)
 {
     if (!pa || !*pa) return;
@@ -154,22 +188,27 @@ static sq_status not_assembling(const sem_sparse *a, const char *fn, sq_error *e
     return SQ_OK;
 }
 
+/* Where key is in the ascending v[lo..hi]; -1 if it is not. */
+static long find_sorted(const sslong *v, long lo, long hi, long key)
+{
+    while (lo <= hi) {
+        const long mid = (lo + hi) / 2;
+        if (v[mid] == key) return mid;
+        if (v[mid] < key)
+            lo = mid + 1;
+        else
+            hi = mid - 1;
+    }
+    return -1;
+}
+
 /* Where block (bi, bj), bi >= bj, is stored: 0 for the diagonal block, else
  * its position p in brow (bptr[bj] < p < bptr[bj + 1]); -1 if it is not in
  * the pattern. */
 static long block_slot(const sem_sparse *a, long bi, long bj)
 {
     if (bi == bj) return 0;
-    long lo = a->bptr[bj] + 1, hi = a->bptr[bj + 1] - 1;
-    while (lo <= hi) {
-        const long mid = (lo + hi) / 2;
-        if (a->brow[mid] == bi) return mid;
-        if (a->brow[mid] < bi)
-            lo = mid + 1;
-        else
-            hi = mid - 1;
-    }
-    return -1;
+    return find_sorted(a->brow, a->bptr[bj] + 1, a->bptr[bj + 1] - 1, bi);
 }
 
 /* Index in A->x of the block's first row in column c of block column bj
@@ -205,9 +244,16 @@ sq_status sem_sparse_block_positions(const sem_sparse *a, long bi, long bj, long
     return SQ_OK;
 }
 
+long sem_sparse_entry(const sem_sparse *a, long i, long j)
+{
+    if (!a || !a->pattern || i < j || j < 0 || i >= a->n) return -1;
+    const sslong *Ap = a->A->p;
+    return find_sorted(a->A->i, (long)Ap[j], (long)Ap[j + 1] - 1, i);
+}
+
 double *sem_sparse_values(sem_sparse *a)
 {
-    return a && a->nblocks && a->assembling ? a->A->x : NULL;
+    return a && (a->nblocks || a->pattern) && a->assembling ? a->A->x : NULL;
 }
 
 sq_status sem_sparse_add(sem_sparse *a, long i, long j, double v, sq_error *err)
@@ -217,6 +263,14 @@ sq_status sem_sparse_add(sem_sparse *a, long i, long j, double v, sq_error *err)
         return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_add: entry (%ld,%ld) outside %ld x %ld", i, j,
                        a->n, a->n);
     if (i < j) return SQ_OK; /* upper triangle: the symmetric twin is added */
+    if (a->pattern) {
+        const long k = sem_sparse_entry(a, i, j);
+        if (k < 0)
+            return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_add: entry (%ld,%ld) outside the pattern", i,
+                           j);
+        ((double *)a->A->x)[k] += v;
+        return SQ_OK;
+    }
     if (a->nblocks) {
         const long bi = i / a->bs, bj = j / a->bs, slot = block_slot(a, bi, bj);
         if (slot < 0)
@@ -337,7 +391,7 @@ static int same_pattern(const cholmod_sparse *A, const cholmod_sparse *B)
 sq_status sem_sparse_factor(sem_sparse *a, sq_error *err)
 {
     SQ_TRY(not_assembling(a, "sparse_factor", err));
-    if (!a->nblocks) {
+    if (!a->nblocks && !a->pattern) {
         /* Duplicates are summed by the conversion. */
         cholmod_sparse *A = cholmod_l_triplet_to_sparse(a->T, a->T->nnz, &a->cc);
         if (!A) return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_factor: out of memory (compressing)");
@@ -374,7 +428,7 @@ sq_status sem_sparse_reset(sem_sparse *a, sq_error *err)
 {
     if (!a || !a->L)
         return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_reset: no factorization to start again from");
-    if (a->nblocks) {
+    if (a->nblocks || a->pattern) {
         memset(a->A->x, 0, sizeof(double) * a->A->nzmax);
     } else {
         if (a->T) cholmod_l_free_triplet(&a->T, &a->cc);

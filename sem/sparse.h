@@ -1,8 +1,10 @@
 /* semquad sem/ — global sparse symmetric positive definite systems,
  * factored by CHOLMOD and solved for many right-hand sides.
  *
- * Two ways to assemble the lower triangle:
+ * Three ways to assemble the lower triangle:
  *  - triplets (sem_sparse_create): any entries, duplicates summed;
+ *  - a pattern known in advance (sem_sparse_create_pattern): values are
+ *    summed in place in the compressed matrix, CHOLMOD's default ordering;
  *  - a block pattern known in advance (sem_sparse_create_blocks): values
  *    are summed in place in the compressed matrix, and the fill-reducing
  *    ordering is computed on the (much smaller) graph of blocks.
@@ -25,6 +27,16 @@ sq_status sem_sparse_create(long n, long nnz_hint, sem_sparse **out, sq_error *e
  * diagonal block).  All values start at zero. */
 sq_status sem_sparse_create_blocks(long nblocks, int bs, const long *bptr, const long *brow,
                                    sem_sparse **out, sq_error *err);
+/* An n x n symmetric matrix of the lower-triangular pattern: column j
+ * holds the rows row[ptr[j]] < ... < row[ptr[j+1]-1], the first being j
+ * (the diagonal).  All values start at zero; they are summed in place
+ * (sem_sparse_add, or sem_sparse_values with sem_sparse_entry), with no
+ * triplets to compress, and factored with the analysis CHOLMOD makes of a
+ * compressed triplet matrix of this pattern (the same ordering, the same
+ * factor as sem_sparse_create's when the same entries are added in the
+ * same order). */
+sq_status sem_sparse_create_pattern(long n, const long *ptr, const long *row, sem_sparse **out,
+                                    sq_error *err);
 void sem_sparse_free(sem_sparse **a); /* NULL-safe, NULLs *a */
 
 /* Add v to A(i,j), duplicates summed.  A is symmetric and stored by its
@@ -49,7 +61,12 @@ sq_status sem_sparse_add_block(sem_sparse *a, long bi, long bj, const double *M,
 sq_status sem_sparse_block_positions(const sem_sparse *a, long bi, long bj, long *pos,
                                      sq_error *err);
 
-/* The values of a block matrix being assembled, NULL otherwise. */
+/* The index, in the array of sem_sparse_values, of entry (i, j), i >= j,
+ * of a matrix made with sem_sparse_create_pattern; -1 if it is not in the
+ * pattern. */
+long sem_sparse_entry(const sem_sparse *a, long i, long j);
+
+/* The values of a block or pattern matrix being assembled, NULL otherwise. */
 double *sem_sparse_values(sem_sparse *a);
 
 /* Compress and factor (Cholesky, CHOLMOD's supernodal/simplicial choice).

@@ -20,7 +20,13 @@
  *    after the values changed (assembled through the positions) the known
  *    x to kappa rtol in at most n iterations; no iteration allowed: not
  *    converged; refused before any factorization; a factorization of the
- *    new values still possible after it. */
+ *    new values still possible after it;
+ *  - a given pattern (sem_sparse_create_pattern): the same entries added
+ *    in the same order as triplets give the same solution to the bit (the
+ *    same compressed matrix and CHOLMOD analysis: what lets the CG solver
+ *    assemble in place and keep its output); entries outside the pattern
+ *    and a malformed pattern are refused; reset and assembled again
+ *    through sem_sparse_values / sem_sparse_entry. */
 #include "sparse.h"
 #include "test_util.h"
 
@@ -260,6 +266,81 @@ static int pcg_case(void)
     return fails;
 }
 
+/* tridiag(-1, 7, -1) + 0.5 (e_0 e_k^T + e_k e_0^T), k = 10, 20, ..: kappa
+ * below 5 as the matrices above */
+#define NP 30 /* solve_with holds up to 32 */
+static double pattern_entry(int i, int j)
+{
+    if (i == j) return 7.0;
+    if (i - j == 1 || j - i == 1) return -1.0;
+    if ((j == 0 && i % 10 == 0) || (i == 0 && j % 10 == 0)) return 0.5;
+    return 0.0;
+}
+
+static int pattern_case(void)
+{
+    int fails = 0;
+    sq_error err = {0};
+    long ptr[NP + 1], row[3 * NP], k = 0;
+    static double A[NP * NP];
+    for (int j = 0; j < NP; ++j) {
+        ptr[j] = k;
+        for (int i = j; i < NP; ++i)
+            if (pattern_entry(i, j) != 0.0) row[k++] = i;
+    }
+    ptr[NP] = k;
+    for (int i = 0; i < NP; ++i)
+        for (int j = 0; j < NP; ++j)
+            A[i * NP + j] = pattern_entry(i, j);
+    sem_sparse *t = NULL, *p = NULL;
+    const long bad[3] = {0, 1, 2}, badrow[2] = {0, 0}; /* column 1 starts at row 0 */
+    fails += sq_check_int("t201 malformed pattern", "status",
+                          sem_sparse_create_pattern(2, bad, badrow, &p, &err), SQ_ERR_USAGE);
+    SQ_TEST_OK(sem_sparse_create(NP, 10, &t, &err), err);
+    SQ_TEST_OK(sem_sparse_create_pattern(NP, ptr, row, &p, &err), err);
+    fails += sq_check_int("t201 pattern, entry outside", "index", sem_sparse_entry(p, 5, 0), -1);
+    fails += sq_check_int("t201 pattern, upper entry", "index", sem_sparse_entry(p, 0, 10), -1);
+    fails += sq_check_int("t201 pattern, entry (10,0)", "found", sem_sparse_entry(p, 10, 0) >= 0, 1);
+    fails += sq_check_int("t201 pattern, add outside", "status", sem_sparse_add(p, 5, 0, 1.0, &err),
+                          SQ_ERR_USAGE);
+    /* each entry as two additions (0.1 and the rest), rows then columns */
+    for (int i = 0; i < NP; ++i)
+        for (int j = 0; j < NP; ++j) {
+            const double v = A[i * NP + j];
+            if (v == 0.0) continue;
+            SQ_TEST_OK(sem_sparse_add(t, i, j, 0.1, &err), err);
+            SQ_TEST_OK(sem_sparse_add(p, i, j, 0.1, &err), err);
+            SQ_TEST_OK(sem_sparse_add(t, i, j, v - 0.1, &err), err);
+            SQ_TEST_OK(sem_sparse_add(p, i, j, v - 0.1, &err), err);
+        }
+    SQ_TEST_OK(sem_sparse_factor(t, &err), err);
+    SQ_TEST_OK(sem_sparse_factor(p, &err), err);
+    double b[NP], xt[NP], xp[NP];
+    for (int i = 0; i < NP; ++i)
+        b[i] = cos(0.3 * i);
+    SQ_TEST_OK(sem_sparse_solve(t, b, xt, &err), err);
+    SQ_TEST_OK(sem_sparse_solve(p, b, xp, &err), err);
+    fails += sq_check_int("t201 pattern against triplets", "bytes differing",
+                          memcmp(xt, xp, sizeof xt) != 0, 0);
+    fails += sq_check_abs("t201 pattern", "max relative error", solve_error(p, NP, A, &fails), 0.0,
+                          CHOL_TOL(NP));
+    /* again through the values, 2 A */
+    SQ_TEST_OK(sem_sparse_reset(p, &err), err);
+    double *x = sem_sparse_values(p);
+    fails += sq_check_int("t201 pattern values", "present", x != NULL, 1);
+    for (int j = 0; x && j < NP; ++j)
+        for (int i = j; i < NP; ++i)
+            if (A[i * NP + j] != 0.0) x[sem_sparse_entry(p, i, j)] += 2.0 * A[i * NP + j];
+    for (int i = 0; i < NP * NP; ++i)
+        A[i] *= 2.0;
+    SQ_TEST_OK(sem_sparse_factor(p, &err), err);
+    fails += sq_check_abs("t201 pattern after reset", "max relative error",
+                          solve_error(p, NP, A, &fails), 0.0, CHOL_TOL(NP));
+    sem_sparse_free(&t);
+    sem_sparse_free(&p);
+    return fails;
+}
+
 int main(void)
 {
     int fails = 0;
@@ -326,5 +407,6 @@ int main(void)
     fails += refactor_case();
     fails += block_case();
     fails += pcg_case();
+    fails += pattern_case();
     return fails ? 1 : 0;
 }
