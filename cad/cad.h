@@ -176,6 +176,17 @@ int cad_face_num_loops(const cad_face *face);
 int cad_face_loop_first_edge(const cad_face *face, int loop);
 int cad_face_loop_num_edges(const cad_face *face, int loop);
 int cad_face_num_edges(const cad_face *face);
+
+/* Names the file gives its faces and edges (STEP: the names of its
+ * ADVANCED_FACE / FACE_SURFACE and EDGE_CURVE items, as OCCT's XDE reader
+ * reads them for sub-shapes; docs/formats.md "Named boundaries"), made
+ * group names: characters other than [A-Za-z0-9_-] as '_', at most 63;
+ * "" and "NONE" are none.  NULL: no name (IGES and BREP files: never).
+ * An edge of a face keeps its name through healing: it is the named edge
+ * of the file's face whose middle point is within the face's junction
+ * tolerance of its own. */
+const char *cad_model_face_name(const cad_model *model, int index);
+const char *cad_face_edge_name(const cad_face *face, int edge);
 int cad_face_edge_loop(const cad_face *face, int edge);
 cad_edge_type cad_face_edge_type(const cad_face *face, int edge);
 double cad_face_edge_length(const cad_face *face, int edge);

@@ -265,6 +265,7 @@ struct cad_face {
     double O[3], X[3], Y[3];
     std::vector<Edge> edges;
     std::vector<int> loop_first, loop_n;
+    std::vector<std::string> edge_name; // per edge, the file's name ("" none)
 
     void to2d(const gp_Pnt &p, double xy[2]) const
     {
@@ -541,6 +542,7 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
                 a.end[d] = b.start[d] = pj[d];
         }
     }
+    for (const Edge &e : f->edges) f->edge_name.push_back(sqcad::edge_name(model, e.edge, gap_tol));
     *out = f.release();
     return SQ_OK;
 }
@@ -619,6 +621,13 @@ int cad_face_loop_num_edges(const cad_face *face, int loop)
 }
 
 int cad_face_num_edges(const cad_face *face) { return face ? (int)face->edges.size() : 0; }
+
+const char *cad_face_edge_name(const cad_face *face, int edge)
+{
+    if (!face || edge < 0 || edge >= (int)face->edge_name.size()) return NULL;
+    const std::string &s = face->edge_name[(size_t)edge];
+    return s.empty() ? NULL : s.c_str();
+}
 
 int cad_face_edge_loop(const cad_face *face, int edge)
 {

@@ -215,6 +215,7 @@ sq_status read_step(const char *path, cad_model *m, sq_error *err)
     m->shape = reader.OneShape();
     if (!(mm > 0) || mm == 1.0) {
         mark_split_faces(reader, NULL, m);
+        sqcad::read_step_names(reader, 1.0, m);
         return SQ_OK;
     }
     gp_Trsf scale;
@@ -222,6 +223,7 @@ sq_status read_step(const char *path, cad_model *m, sq_error *err)
     BRepBuilderAPI_Transform to_unit(m->shape, scale, Standard_True);
     m->shape = to_unit.Shape();
     mark_split_faces(reader, &to_unit, m);
+    sqcad::read_step_names(reader, 1.0 / mm, m);
     return SQ_OK;
 }
 
@@ -415,6 +417,7 @@ sq_status model_read(const char *path, const cad_read_options *opts, cad_model *
                           nplanar, nf);
         m->note = buf;
     }
+    sqcad::resolve_names(m.get()); // before healing replaces faces
     m->heal_tol = heal_tolerance(m.get(), opts);
     sqcad::heal_model(m.get(), m->heal_tol, opts->heal_tolerance > 0);
     *out = m.release();

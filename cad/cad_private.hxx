@@ -11,6 +11,7 @@
 #include <TopoDS_Face.hxx>
 #include <TopoDS_Shape.hxx>
 #include <gp_Pln.hxx>
+#include <gp_Pnt.hxx>
 
 #include <exception>
 #include <new>
@@ -18,7 +19,17 @@
 #include <utility>
 #include <vector>
 
+class STEPControl_Reader;
+
 namespace sqcad {
+// A named face or edge of the file (cad_names.cpp): its centre of mass
+// (a face, with its area) or the middle of its curve (an edge).
+struct named_place {
+    gp_Pnt at;
+    double area;
+    std::string name;
+};
+
 // One defect found on a face, healed or not (cad_heal.cpp).
 struct heal_record {
     std::string kind;   // "gap", "connection", "small edge", "order", ...
@@ -48,6 +59,10 @@ struct cad_model {
     // faces the STEP reader made by splitting one face of the file whose
     // loops cross, each with the reason it is broken
     std::vector<std::pair<TopoDS_Shape, std::string>> split;
+    // names the file gives (cad_names.cpp): its named faces and edges by
+    // place, and per face its name ("" none)
+    std::vector<sqcad::named_place> named_faces, named_edges;
+    std::vector<std::string> face_name;
 };
 
 namespace sqcad {
@@ -75,6 +90,14 @@ void heal_model(cad_model *m, double tol, bool given);
 // cusp that can be blunted within tol.
 TopoDS_Face blunt_cusps(const TopoDS_Face &face, double tol, double prec,
                         std::vector<heal_record> &out);
+
+// Names (cad_names.cpp): the STEP items' names, placed in the file's unit
+// (scale: the reader's unit to it); then, the model's faces known, each
+// face's name; the name of the named edge whose middle is within tol of
+// e's ("" if none).
+void read_step_names(STEPControl_Reader &reader, double scale, cad_model *m);
+void resolve_names(cad_model *m);
+std::string edge_name(const cad_model *m, const TopoDS_Edge &e, double tol);
 
 // The OCCT edge under edge `edge` of a face (cad_face.cpp), NULL if out of range.
 const TopoDS_Edge *face_edge(const cad_face *face, int edge);

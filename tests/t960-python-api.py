@@ -28,13 +28,17 @@ def fail(what):
 
 
 def read_msh(path):
-    """Nodes (n,3) and the quads' node tags (1-based, Gmsh order) of our
-    MSH 4.1 (one node block, quads first: write_msh.c)."""
+    """Nodes (n,3) by tag and the quads' node tags (1-based, Gmsh order) of
+    our MSH 4.1 (a node block per entity, quads first: write_msh.c)."""
     lines = open(path).read().split("\n")
     i = lines.index("$Nodes")
-    n = int(lines[i + 1].split()[1])
-    start = i + 3 + n  # header, block header, n tags
-    nodes = np.array([[float(v) for v in l.split()] for l in lines[start:start + n]])
+    nblocks, n = (int(v) for v in lines[i + 1].split()[:2])
+    nodes, i = np.zeros((n, 3)), i + 2
+    for _ in range(nblocks):
+        k = int(lines[i].split()[3])
+        tags = [int(t) - 1 for t in lines[i + 1:i + 1 + k]]
+        nodes[tags] = [[float(v) for v in l.split()] for l in lines[i + 1 + k:i + 1 + 2 * k]]
+        i += 1 + 2 * k
     i = lines.index("$Elements")
     nq = int(lines[i + 2].split()[3])
     quads = np.array([[int(v) for v in l.split()[1:]] for l in lines[i + 3:i + 3 + nq]])

@@ -1,6 +1,6 @@
-/* semquad public API: boundary names (sq_options.names, docs/formats.md
- * "Named boundaries") given to the mesh's boundary curves, which the
- * writers turn into group names. */
+/* semquad public API: boundary names (the CAD file's, then
+ * sq_options.names over them, docs/formats.md "Named boundaries") given to
+ * the mesh's boundary curves, which the writers turn into group names. */
 #include "api_private.h"
 
 #include <math.h>
@@ -59,12 +59,37 @@ static sq_status nearest_tag(const sq_quad_mesh *m, const sq_boundary_name *b, i
     return SQ_OK;
 }
 
+/* Curve t named name (a copy), tag_name made when missing. */
+static sq_status name_tag(sq_quad_mesh *m, int t, const char *name, sq_error *err)
+{
+    if (!m->tag_name && !(m->tag_name = calloc((size_t)m->ntags, sizeof *m->tag_name)))
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    /* a later name of the curve wins */
+    free(m->tag_name[t]);
+    if (!(m->tag_name[t] = malloc(strlen(name) + 1)))
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    strcpy(m->tag_name[t], name);
+    return SQ_OK;
+}
+
+sq_status sq_api_file_names(sq_quad_mesh *m, const cad_face *const *cad,
+                            const sq_domain_curve *curves, int ncurves, sq_error *err)
+{
+    for (int t = 0; !curves && t < m->ntags; t++) {
+        const char *name = cad_face_edge_name(cad[0], t);
+        if (name) SQ_TRY(name_tag(m, t, name, err));
+    }
+    for (int c = 0; curves && c < ncurves; c++) {
+        const char *name = curves[c].tag >= 0 ? cad_face_edge_name(cad[curves[c].face[0]], curves[c].edge[0]) : NULL;
+        if (name) SQ_TRY(name_tag(m, curves[c].tag, name, err));
+    }
+    return SQ_OK;
+}
+
 sq_status sq_api_name_tags(sq_quad_mesh *m, const sq_options *o, sq_error *err)
 {
     if (o->nnames <= 0) return SQ_OK;
     SQ_TRY(sq_api_names_check(o, err));
-    if (!(m->tag_name = calloc((size_t)m->ntags, sizeof *m->tag_name)))
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     for (int k = 0; k < o->nnames; k++) {
         const sq_boundary_name *b = &o->names[k];
         int t = b->edge;
@@ -72,11 +97,7 @@ sq_status sq_api_name_tags(sq_quad_mesh *m, const sq_options *o, sq_error *err)
         if (t >= m->ntags)
             return SQ_FAIL(err, SQ_ERR_USAGE, "name %s: edge %d, the boundary has edges 0..%d",
                            b->name, t, m->ntags - 1);
-        /* a later line names the curve again: the last one wins */
-        free(m->tag_name[t]);
-        if (!(m->tag_name[t] = malloc(strlen(b->name) + 1)))
-            return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-        strcpy(m->tag_name[t], b->name);
+        SQ_TRY(name_tag(m, t, b->name, err));
     }
     return SQ_OK;
 }

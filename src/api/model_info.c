@@ -25,7 +25,9 @@ static void print_text(FILE *fp, const char *path, const cad_model *m, const fac
     int total = cad_model_num_faces(m);
     fprintf(fp, "%s: %d face%s, unit %s\n", path, total, total == 1 ? "" : "s", cad_model_unit(m));
     for (int k = 0; k < nf; k++) {
-        fprintf(fp, "face %d: %s, %s", f[k].index, f[k].surface, sq_face_status_name(f[k].status));
+        const char *fname = cad_model_face_name(m, f[k].index);
+        fprintf(fp, "face %d%s%s%s: %s, %s", f[k].index, fname ? " \"" : "", fname ? fname : "",
+                fname ? "\"" : "", f[k].surface, sq_face_status_name(f[k].status));
         if (!f[k].face) {
             if (f[k].status == CAD_FACE_BROKEN) fprintf(fp, ": %s", f[k].reason);
             fprintf(fp, "\n");
@@ -44,10 +46,13 @@ static void print_text(FILE *fp, const char *path, const cad_model *m, const fac
             int first = cad_face_loop_first_edge(f[k].face, l);
             int n = cad_face_loop_num_edges(f[k].face, l);
             fprintf(fp, "  loop %d (%s): %d edge%s\n", l, l ? "hole" : "outer", n, n == 1 ? "" : "s");
-            for (int e = first; e < first + n; e++)
-                fprintf(fp, "    edge %d: %s, length %.10g\n", e,
-                       cad_edge_type_name(cad_face_edge_type(f[k].face, e)),
-                       cad_face_edge_length(f[k].face, e));
+            for (int e = first; e < first + n; e++) {
+                const char *ename = cad_face_edge_name(f[k].face, e);
+                fprintf(fp, "    edge %d%s%s%s: %s, length %.10g\n", e, ename ? " \"" : "",
+                        ename ? ename : "", ename ? "\"" : "",
+                        cad_edge_type_name(cad_face_edge_type(f[k].face, e)),
+                        cad_face_edge_length(f[k].face, e));
+            }
         }
         fprintf(fp, "  corners: %d\n", in->ncorners);
         for (int v = 0; v < in->nvertices; v++) {
@@ -75,6 +80,8 @@ static void print_json(FILE *fp, const char *path, const cad_model *m, const fac
         sq_json_begin_object(&j);
         sq_json_key(&j, "index");
         sq_json_int(&j, f[k].index);
+        if (cad_model_face_name(m, f[k].index))
+            sq_json_key_string(&j, "name", cad_model_face_name(m, f[k].index));
         sq_json_key(&j, "surface");
         sq_json_string(&j, f[k].surface);
         sq_json_key_string(&j, "status", sq_face_status_name(f[k].status));
@@ -103,6 +110,8 @@ static void print_json(FILE *fp, const char *path, const cad_model *m, const fac
                 sq_json_begin_array(&j);
                 for (int e = first; e < first + n; e++) {
                     sq_json_begin_object(&j);
+                    if (cad_face_edge_name(f[k].face, e))
+                        sq_json_key_string(&j, "name", cad_face_edge_name(f[k].face, e));
                     sq_json_key(&j, "type");
                     sq_json_string(&j, cad_edge_type_name(cad_face_edge_type(f[k].face, e)));
                     sq_json_key(&j, "length");

@@ -186,6 +186,7 @@ static sq_status mesh_domain(const sq_model *m, const int *faces, int n, const s
             if (sq_domain_face_shares(&d, k)) road[k] = "split";
         if (st == SQ_OK) st = sq_domain_merge(&d, f.q, faces, os.size, &h->q, err);
     }
+    if (st == SQ_OK) st = sq_api_file_names(h->q, f.cad, d.curves, d.ncurves, err);
     if (st == SQ_OK) st = keep_domain(h, &d, &f, road, rounds, err);
     sq_domain_free(&d);
     faces_close(&f);

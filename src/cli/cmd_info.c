@@ -29,7 +29,7 @@ static const sq_cli_opt info_opts[] = {
 const sq_cli_command sq_cli_info = {
     .name = "info",
     .summary = "Every face with its status (ok, healed, not planar, broken: reason), boundary "
-               "loops, edges (type, length), corners (angle), chi, area, what was healed; "
+               "loops, edges (name, type, length), corners (angle), chi, area, what was healed; "
                "on standard output (exit 0 even with broken faces).",
     .example = "semquad info examples/half_disc.step --json",
     .opts = info_opts,

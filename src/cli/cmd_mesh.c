@@ -146,7 +146,7 @@ static const sq_cli_opt mesh_opts[] = {
     {.name = "sizes", .kind = SQ_CLI_CUSTOM, .value = "FILE", .def = "none",
      .help = "size sources, one per line (docs/sizes.md)", .parse = sq_cli_parse_size_file},
     {.name = "names", .kind = SQ_CLI_CUSTOM, .value = "FILE", .def = "none",
-     .help = "boundary names, lines 'EDGE NAME' or 'X Y NAME' (docs/formats.md)",
+     .help = "boundary names, lines 'EDGE NAME' or 'X Y NAME', over the STEP file's (docs/formats.md)",
      .parse = sq_cli_parse_names_file},
     {.name = "periodic", .kind = SQ_CLI_WORD, .value = "auto|A:B[,C:D...]", .def = "none",
      .help = "periodic edges: auto, the pairs matching under a translation or rotation; A:B, "

@@ -1,6 +1,7 @@
 #include "write_msh.h"
 
 #include "format_number.h"
+#include "msh_entities.h"
 #include "outfile.h"
 #include "quad_order.h"
 
@@ -27,16 +28,15 @@ sq_status sq_quad_mesh_check(const sq_quad_mesh *m, sq_error *err)
     return SQ_OK;
 }
 
-/* What both encodings write: the equispaced mesh, Gmsh's node orders, the
- * boundary lines per curve and the bounding boxes of the curves (bb[4t..])
- * and of the surface (bb[4 ntags..]). */
+/* What both encodings write: the equispaced mesh, Gmsh's node orders and
+ * the model entities (msh_entities.h). */
 typedef struct {
     FILE *fp;
     int binary;
     const sq_quad_mesh *m0; /* the caller's mesh (its names) */
     const sq_quad_mesh *m;  /* equispaced */
-    int *ij, lo[11], *count;
-    double *bb;
+    int *ij, lo[11];
+    sq_msh_entities ent;
     const sq_progress *progress;
     long done, total;
 } msh_writer;
@@ -45,32 +45,6 @@ typedef struct {
  * size_t (data-size 8); the int 1 after the version lets readers tell. */
 static void put_size(msh_writer *w, size_t v) { fwrite(&v, sizeof v, 1, w->fp); }
 static void put_int(msh_writer *w, int v) { fwrite(&v, sizeof v, 1, w->fp); }
-
-static void bounding_boxes(msh_writer *w)
-{
-    const sq_quad_mesh *m = w->m;
-    int Q = m->order, npe = (Q + 1) * (Q + 1), nt = m->ntags;
-    double *bb = w->bb;
-    for (int t = 0; t <= nt; t++) bb[4 * t] = bb[4 * t + 1] = HUGE_VAL, bb[4 * t + 2] = bb[4 * t + 3] = -HUGE_VAL;
-    for (int v = 0; v < m->nnodes; v++) {
-        double *b = &bb[4 * nt];
-        b[0] = fmin(b[0], m->xy[2 * v]), b[1] = fmin(b[1], m->xy[2 * v + 1]);
-        b[2] = fmax(b[2], m->xy[2 * v]), b[3] = fmax(b[3], m->xy[2 * v + 1]);
-    }
-    for (int s = 0; s < m->nbnd; s++) {
-        int t = m->bnd_tag[s];
-        const int *c = &m->conn[(size_t)m->bnd_quad[s] * npe];
-        w->count[t]++;
-        for (int k = 0; k <= Q; k++) {
-            const double *x = &m->xy[2 * (size_t)c[sq_quad_side_node(Q, m->bnd_side[s], k)]];
-            double *b = &bb[4 * t];
-            b[0] = fmin(b[0], x[0]), b[1] = fmin(b[1], x[1]);
-            b[2] = fmax(b[2], x[0]), b[3] = fmax(b[3], x[1]);
-        }
-    }
-    for (int t = 0; t <= nt; t++)
-        if (bb[4 * t] > bb[4 * t + 2]) bb[4 * t] = bb[4 * t + 1] = bb[4 * t + 2] = bb[4 * t + 3] = 0.0;
-}
 
 /* Physical names (text in both encodings): one group per boundary curve or
  * group of curves named alike (the physical tag of its least curve); one
@@ -91,77 +65,123 @@ static void physical_names(msh_writer *w)
     fputs("$EndPhysicalNames\n", w->fp);
 }
 
-/* One entity: tag, bounding box (z = 0), its physical group, the curves
- * bounding it (nbound of them, tags 1..nbound). */
-static void entity(msh_writer *w, int tag, const double *b, int physical, int nbound)
+/* One entity of dimension dim: tag, bounding box b (z = 0) or, for a
+ * point, its position (b[0], b[1]), its physical group (none: 0), the
+ * nbound entities bounding it (signed tags). */
+static void entity(msh_writer *w, int dim, int tag, const double *b, int physical, const int *bound,
+                   int nbound)
 {
+    int point = dim == 0, nbox = point ? 3 : 6;
+    double box[6] = {b[0], b[1], 0.0, point ? 0.0 : b[2], point ? 0.0 : b[3], 0.0};
     if (w->binary) {
-        double box[6] = {b[0], b[1], 0.0, b[2], b[3], 0.0};
         put_int(w, tag);
-        fwrite(box, sizeof *box, 6, w->fp);
-        put_size(w, 1);
-        put_int(w, physical);
+        fwrite(box, sizeof *box, (size_t)nbox, w->fp);
+        put_size(w, physical > 0);
+        if (physical > 0) put_int(w, physical);
+        if (point) return;
         put_size(w, (size_t)nbound);
-        for (int t = 0; t < nbound; t++) put_int(w, t + 1);
+        for (int k = 0; k < nbound; k++) put_int(w, bound[k]);
         return;
     }
-    char x[4][SQ_DOUBLE_CHARS];
-    for (int k = 0; k < 4; k++) sq_format_double(x[k], b[k]);
-    fprintf(w->fp, "%d %s %s 0 %s %s 0 1 %d %d", tag, x[0], x[1], x[2], x[3], physical, nbound);
-    for (int t = 0; t < nbound; t++) fprintf(w->fp, " %d", t + 1);
+    fprintf(w->fp, "%d", tag);
+    for (int k = 0; k < nbox; k++) {
+        char x[SQ_DOUBLE_CHARS];
+        sq_format_double(x, box[k]);
+        fprintf(w->fp, " %s", x);
+    }
+    if (physical > 0) fprintf(w->fp, " 1 %d", physical);
+    else fputs(" 0", w->fp);
+    if (!point) fprintf(w->fp, " %d", nbound);
+    for (int k = 0; !point && k < nbound; k++) fprintf(w->fp, " %d", bound[k]);
     fputc('\n', w->fp);
 }
 
-/* Entities: no points; curve t+1 with physical t's group and no bounding
- * points; surface r+1 with physical nt+1+r bounded by all curves. */
-static void entities(msh_writer *w)
+/* Entities (msh_entities.h): point p+1 at its node, no physical group;
+ * curve c+1 (physical tag: a boundary curve t's group, an interface none)
+ * from its first point to its last (the last signed -); surface r+1 with
+ * physical tag ntags+1+r, bounded by its curves (signed - where the curve
+ * runs with the surface on its right). bound holds room for 2 tags per
+ * curve. */
+static void entities(msh_writer *w, int *bound)
 {
-    const sq_quad_mesh *m = w->m;
-    int nt = m->ntags, ns = m->nregions > 0 ? m->nregions : 1;
+    const sq_msh_entities *e = &w->ent;
+    int nt = w->m->ntags;
     fputs("$Entities\n", w->fp);
     if (w->binary) {
-        size_t n[4] = {0, (size_t)nt, (size_t)ns, 0};
+        size_t n[4] = {(size_t)e->npoints, (size_t)e->ncurves, (size_t)e->nsurfaces, 0};
         fwrite(n, sizeof *n, 4, w->fp);
     } else
-        fprintf(w->fp, "0 %d %d 0\n", nt, ns);
-    for (int t = 0; t < nt; t++) entity(w, t + 1, &w->bb[4 * t], sq_quad_mesh_tag_group(w->m0, t) + 1, 0);
-    for (int r = 0; r < ns; r++) entity(w, r + 1, &w->bb[4 * nt], nt + 1 + r, nt);
+        fprintf(w->fp, "%d %d %d 0\n", e->npoints, e->ncurves, e->nsurfaces);
+    for (int p = 0; p < e->npoints; p++) {
+        const double *x = &w->m->xy[2 * (size_t)e->point_node[p]];
+        entity(w, 0, p + 1, x, 0, NULL, 0);
+    }
+    for (int c = 0; c < e->ncurves; c++) {
+        int n = 0;
+        if (e->curve_ends[2 * c] >= 0) bound[n++] = e->curve_ends[2 * c] + 1;
+        if (e->curve_ends[2 * c + 1] >= 0) bound[n++] = -(e->curve_ends[2 * c + 1] + 1);
+        entity(w, 1, c + 1, &e->curve_bb[4 * c], c < nt ? sq_quad_mesh_tag_group(w->m0, c) + 1 : 0, bound, n);
+    }
+    for (int r = 0; r < e->nsurfaces; r++) {
+        int n = 0;
+        for (int c = 0; c < e->ncurves; c++)
+            if (e->curve_faces[2 * c] == r || e->curve_faces[2 * c + 1] == r)
+                bound[n++] = e->curve_faces[2 * c] == r ? c + 1 : -(c + 1);
+        entity(w, 2, r + 1, &e->surface_bb[4 * r], nt + 1 + r, bound, n);
+    }
     fputs(w->binary ? "\n$EndEntities\n" : "$EndEntities\n", w->fp);
 }
 
-/* Nodes: one block on the surface, tags 1..nnodes, not parametric. */
-static void nodes(msh_writer *w)
+/* One block of nodes: entity (dim, tag), not parametric, node[n] (mesh
+ * indices, tags + 1). */
+static void node_block(msh_writer *w, int dim, int tag, const int *node, int n)
 {
     const sq_quad_mesh *m = w->m;
-    size_t n = (size_t)m->nnodes;
-    fputs("$Nodes\n", w->fp);
     if (w->binary) {
-        size_t head[4] = {1, n, n ? 1 : 0, n};
-        fwrite(head, sizeof *head, 4, w->fp);
-        put_int(w, 2), put_int(w, 1), put_int(w, 0), put_size(w, n);
-        for (size_t v = 0; v < n; v++) put_size(w, v + 1);
-        for (size_t v = 0; v < n; v++) {
-            double x[3] = {m->xy[2 * v], m->xy[2 * v + 1], 0.0};
+        put_int(w, dim), put_int(w, tag), put_int(w, 0), put_size(w, (size_t)n);
+        for (int k = 0; k < n; k++) put_size(w, (size_t)node[k] + 1);
+        for (int k = 0; k < n; k++) {
+            double x[3] = {m->xy[2 * (size_t)node[k]], m->xy[2 * (size_t)node[k] + 1], 0.0};
             fwrite(x, sizeof *x, 3, w->fp);
             sq_progress_every(w->progress, "write", ++w->done, w->total);
         }
-        fputs("\n$EndNodes\n", w->fp);
         return;
     }
-    fprintf(w->fp, "1 %d %d %d\n2 1 0 %d\n", m->nnodes, m->nnodes ? 1 : 0, m->nnodes, m->nnodes);
+    fprintf(w->fp, "%d %d 0 %d\n", dim, tag, n);
     char line[SQ_XY0_CHARS + 1];
-    for (int v = 0; v < m->nnodes; v++) {
-        int n = sq_format_long(line, v + 1);
-        line[n++] = '\n';
-        fwrite(line, 1, (size_t)n, w->fp);
+    for (int k = 0; k < n; k++) {
+        int len = sq_format_long(line, node[k] + 1);
+        line[len++] = '\n';
+        fwrite(line, 1, (size_t)len, w->fp);
     }
-    for (int v = 0; v < m->nnodes; v++) {
-        int n = sq_format_xy0(line, m->xy[2 * v], m->xy[2 * v + 1]);
-        line[n++] = '\n';
-        fwrite(line, 1, (size_t)n, w->fp);
+    for (int k = 0; k < n; k++) {
+        int len = sq_format_xy0(line, m->xy[2 * (size_t)node[k]], m->xy[2 * (size_t)node[k] + 1]);
+        line[len++] = '\n';
+        fwrite(line, 1, (size_t)len, w->fp);
         sq_progress_every(w->progress, "write", ++w->done, w->total);
     }
-    fputs("$EndNodes\n", w->fp);
+}
+
+/* Nodes: one block per entity holding nodes (points, curves, surfaces),
+ * node tag = mesh index + 1 (so not contiguous within a block). */
+static void nodes(msh_writer *w)
+{
+    const sq_msh_entities *e = &w->ent;
+    int nent = e->npoints + e->ncurves + e->nsurfaces, nblocks = 0;
+    size_t n = (size_t)w->m->nnodes;
+    for (int k = 0; k < nent; k++) nblocks += e->first[k + 1] > e->first[k];
+    fputs("$Nodes\n", w->fp);
+    if (w->binary) {
+        size_t head[4] = {(size_t)nblocks, n, n ? 1 : 0, n};
+        fwrite(head, sizeof *head, 4, w->fp);
+    } else
+        fprintf(w->fp, "%d %zu %d %zu\n", nblocks, n, n ? 1 : 0, n);
+    for (int k = 0; k < nent; k++) {
+        int dim = k < e->npoints ? 0 : k < e->npoints + e->ncurves ? 1 : 2;
+        int tag = k - (dim == 0 ? 0 : dim == 1 ? e->npoints : e->npoints + e->ncurves) + 1;
+        if (e->first[k + 1] > e->first[k]) node_block(w, dim, tag, &e->node[e->first[k]], e->first[k + 1] - e->first[k]);
+    }
+    fputs(w->binary ? "\n$EndNodes\n" : "$EndNodes\n", w->fp);
 }
 
 /* A block header: dimension, entity, element type, count. */
@@ -202,7 +222,7 @@ static void elements(msh_writer *w, int *which, size_t *rec)
     const sq_quad_mesh *m = w->m;
     int Q = m->order, npe = (Q + 1) * (Q + 1), nt = m->ntags, ns = m->nregions > 0 ? m->nregions : 1;
     int nblocks = ns, nel = m->nquads + m->nbnd;
-    for (int t = 0; t < nt; t++) nblocks += w->count[t] > 0;
+    for (int t = 0; t < nt; t++) nblocks += w->ent.curve_sides[t] > 0;
     fputs("$Elements\n", w->fp);
     if (w->binary) {
         size_t head[4] = {(size_t)nblocks, (size_t)nel, nel ? 1 : 0, (size_t)nel};
@@ -219,8 +239,8 @@ static void elements(msh_writer *w, int *which, size_t *rec)
     }
     int tag = m->nquads;
     for (int t = 0; t < nt; t++) {
-        if (!w->count[t]) continue;
-        block(w, 1, t + 1, sq_gmsh_line_type(Q), w->count[t]);
+        if (!w->ent.curve_sides[t]) continue;
+        block(w, 1, t + 1, sq_gmsh_line_type(Q), w->ent.curve_sides[t]);
         for (int s = 0; s < m->nbnd; s++) {
             if (m->bnd_tag[s] != t) continue;
             for (int k = 0; k <= Q; k++) which[k] = sq_quad_side_node(Q, m->bnd_side[s], w->lo[k]);
@@ -277,21 +297,19 @@ static sq_status write_msh(const char *path, const sq_quad_mesh *m0, int binary,
         SQ_TRY(sq_quad_mesh_resample(m0, SQ_NODES_EQUISPACED, &eq, err));
         w.m = eq;
     }
-    int Q = w.m->order, npe = (Q + 1) * (Q + 1), nt = w.m->ntags;
+    int Q = w.m->order, npe = (Q + 1) * (Q + 1);
+    sq_status st = sq_msh_entities_build(w.m, &w.ent, err);
     w.ij = malloc(sizeof(int) * 2 * (size_t)npe);
-    w.count = calloc((size_t)nt + 1, sizeof *w.count);
-    w.bb = malloc(sizeof(double) * 4 * ((size_t)nt + 1));
     int *which = malloc(sizeof(int) * (size_t)npe);
     size_t *rec = malloc(sizeof(size_t) * ((size_t)npe + 1));
+    int *bound = malloc(sizeof(int) * (2 * (size_t)w.ent.ncurves + 1));
     sq_outfile f = {0};
-    sq_status st = w.ij && w.count && w.bb && which && rec
-                       ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK && !(w.ij && which && rec && bound)) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK) st = sq_outfile_open(path, &f, err);
     if (st == SQ_OK) {
         w.fp = f.fp;
         sq_quad_gmsh_order(Q, w.ij);
         sq_line_order(Q, w.lo);
-        bounding_boxes(&w);
         fputs(binary ? "$MeshFormat\n4.1 1 8\n" : "$MeshFormat\n4.1 0 8\n", w.fp);
         if (binary) {
             put_int(&w, 1);
@@ -299,7 +317,7 @@ static sq_status write_msh(const char *path, const sq_quad_mesh *m0, int binary,
         }
         fputs("$EndMeshFormat\n", w.fp);
         physical_names(&w);
-        entities(&w);
+        entities(&w, bound);
         nodes(&w);
         elements(&w, which, rec);
         periodic(&w);
@@ -307,11 +325,11 @@ static sq_status write_msh(const char *path, const sq_quad_mesh *m0, int binary,
     }
     sq_outfile_abort(&f);
     sq_quad_mesh_free(&eq);
+    sq_msh_entities_free(&w.ent);
     free(w.ij);
-    free(w.count);
-    free(w.bb);
     free(which);
     free(rec);
+    free(bound);
     return st;
 }
 

@@ -7,8 +7,10 @@
  * physical group "boundary_<tag>" (physical tag tag+1) per boundary curve
  * (curves named alike share one group, named so, the physical tag of the
  * least of them),
- * one surface entity with physical group "domain" (physical tag ntags+1).
- * Node tag = mesh node index + 1, quad element tag = quad index + 1.
+ * one surface entity with physical group "domain" (physical tag ntags+1),
+ * or one per face of a domain; point entities at the corners and the
+ * interfaces between faces as curves (msh_entities.h), one node block per
+ * entity.  Node tag = mesh node index + 1, quad element tag = quad index + 1.
  * Format: Gmsh reference manual, "MSH file format version 4.1"; the binary
  * form ("4.1 1 8") has the same sections with the numbers of $Entities,
  * $Nodes and $Elements as native ints, size_t and doubles. */
