@@ -157,7 +157,14 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
                        : NULL;
     if (st == SQ_OK && opt->sizes && !need) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK && need) st = qm_interior_measure(L, face, opt, size, need, err);
-    if (st == SQ_OK) st = qm_quantize(L, elen, size, grade, need, opt, nseg, err);
+    int *partner = st == SQ_OK && opt->periodic.npairs
+                       ? malloc(sizeof(int) * ((size_t)L->nedges + 1))
+                       : NULL;
+    if (st == SQ_OK && opt->periodic.npairs && !partner)
+        st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK && partner) qm_periodic_partners(L, face, opt, size, partner);
+    if (st == SQ_OK) st = qm_quantize(L, elen, size, grade, need, partner, opt, nseg, err);
+    free(partner);
     free(need);
     /* the quantization can exceed area / size^2 (one segment at least per
      * chord, sides matched): check its own count before allocating */

@@ -61,6 +61,10 @@ typedef struct {
      * relaxation move them on no face, so the faces sharing e agree) */
     const sq_edge_points *edge_points;
     const int *held_edges;
+    /* identified edges (periodic, identified_edges.h; none: npairs 0): the
+     * layout road gives a boundary piece on a and its image on b the same
+     * chords */
+    sq_identification periodic;
 } sq_mesher_options;
 
 /* 2e7 quads of order 4 take about 10 GB (25 nodes of 16 bytes each, the
