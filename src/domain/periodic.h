@@ -15,12 +15,15 @@
  *     the others are candidates, reported, for `A:B` to take.  `A:B` pairs
  *     are checked the same way: a pair that does not match is refused
  *     (SQ_ERR_PERIODIC);
- *  2. meshing: the face as a domain of one face whose interfaces are the
- *     pairs (sq_periodic_domain: the split road's exchange of vertices,
- *     domain.h design 2, maps b's arc lengths to a's), or the layout road
- *     where its vertices happen to agree; either way the nodes of b are then
- *     set to the images of a's (sq_periodic_link), so they coincide to one
- *     rounding of T;
+ *  2. meshing: the layout road, traced on the identified domain where the
+ *     pairs are translations (sq_periodic.identified: the field glued across
+ *     them, separatrices re-entering, a piece and its image one chord
+ *     count; src/field/identified_edges.h), kept where its nodes on the
+ *     pairs correspond; else the face as a domain of one face whose
+ *     interfaces are the pairs (sq_periodic_domain: the split road's
+ *     exchange of vertices, domain.h design 2, maps b's arc lengths to
+ *     a's); either way the nodes of b are then set to the images of a's
+ *     (sq_periodic_link), so they coincide to one rounding of T;
  *  3. the identified domain (sq_periodic_identified): Euler characteristic
  *     and the net index its interior vertices must carry (Gauss–Bonnet). */
 #ifndef SQ_PERIODIC_H
