@@ -11,7 +11,10 @@ kernel (python3-gmsh) and fragmented so that faces share their edges:
                  semi-axes 0.6, 0.35) filled by the ellipse as a second face;
   sector         one face: 1/8 of the ring 0.5 <= r <= 1 about the origin,
                  0 <= angle <= 45 deg (its radial sides periodic under the
-                 rotation by 45 deg, docs/domains.md).
+                 rotation by 45 deg, docs/domains.md);
+  channel        one face: the channel [0,3]x[0,1] with a round hole (centre
+                 (1.2, 0.5), radius 0.25), its walls y = 0 and y = 1
+                 periodic under the translation by (0, 1).
 
 usage: domain_faces.py NAME OUT.step; prints the exact face areas, one a line."""
 import math
@@ -46,6 +49,11 @@ def build(name):
         occ.addPlaneSurface([occ.addCurveLoop(lines)])
         occ.remove([(0, c)])
         return [math.pi / 8 * (1 - 0.25)]
+    if name == "channel":
+        a = occ.addRectangle(0, 0, 0, 3, 1)
+        b = occ.addDisk(1.2, 0.5, 0, 0.25, 0.25)
+        occ.cut([(2, a)], [(2, b)])
+        return [3 - math.pi * 0.0625]
     raise SystemExit("unknown domain " + name)
 
 

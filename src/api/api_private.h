@@ -43,6 +43,7 @@ struct sq_field {
 
 struct sq_quad_layout {
     sq_api_face face;
+    sq_periodic per; /* --periodic pairs (npairs 0: none) */
     sq_layout_result r;
     double *t_split; /* seconds writing the patches' STEP file, -1 if none (the
                         writers take a const handle: the clock is apart) */
@@ -103,6 +104,11 @@ sq_status sq_api_file_names(sq_quad_mesh *m, const cad_face *const *cad,
 
 /* sq_face_mesh with the vertices on the face's edges where held_edges[e]
  * is 1 held where they are placed (a domain's shared curves; NULL: none). */
+/* --periodic: the pairs of face (periodic.h design 1) into per, logged;
+ * the translations identified in lo's field and tracing (face_mesh.c). */
+sq_status sq_api_periodic_find(const cad_face *face, const sq_face_info *info,
+                               const sq_options *o, sq_periodic *per, sq_layout_options *lo,
+                               sq_error *err);
 sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
                            const int *held_edges, sq_mesh **out, sq_error *err);
 

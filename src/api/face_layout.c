@@ -19,6 +19,12 @@ sq_status sq_face_layout(const sq_model *m, int face, const sq_options *o, sq_qu
     }
     *l->t_split = -1.0;
     sq_status st = sq_api_face_open(m, face, o, &l->face, err);
+    if (st == SQ_OK && o->periodic) {
+        sq_face_info info = {0};
+        st = sq_face_info_compute(l->face.cad, &info, err);
+        if (st == SQ_OK) st = sq_api_periodic_find(l->face.cad, &info, o, &l->per, &lo, err);
+        sq_face_info_free(&info);
+    }
     if (st == SQ_OK) st = sq_layout_run(l->face.cad, &lo, &l->r, err);
     char split[512];
     if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && sq_layout_note(&l->r, split, sizeof split))
@@ -36,6 +42,7 @@ void sq_quad_layout_free(sq_quad_layout **l)
 {
     if (!l || !*l) return;
     sq_layout_result_free(&(*l)->r);
+    sq_periodic_free(&(*l)->per);
     sq_api_face_close(&(*l)->face);
     free((*l)->t_split);
     free(*l);

@@ -118,7 +118,10 @@ static sq_status mesh_by_layout(void *ctx, const sq_mesher_options *mo, sq_quad_
     const layout_ctx *c = ctx;
     SQ_TRY(sq_mesh_layout(c->face, c->r->info, &c->r->layout, mo, m, err));
     if (!c->per) return SQ_OK;
-    sq_status st = sq_periodic_link(c->per, *m, sq_mesher_size(mo, c->r->layout.face_area), err);
+    const double tol =
+        c->per->nidentified ? SQ_IDENTIFIED_CROSSING_REL_TOL : SQ_PERIODIC_NODE_REL_TOL;
+    sq_status st =
+        sq_periodic_link(c->per, *m, sq_mesher_size(mo, c->r->layout.face_area), tol, err);
     if (st != SQ_OK) sq_quad_mesh_free(m);
     return st;
 }
@@ -144,7 +147,7 @@ static sq_status mesh_by_split(void *ctx, const sq_mesher_options *mo, sq_quad_m
     SQ_TRY(sq_periodic_domain(&c->face, c->info, c->per, &d, err));
     sq_status st = sq_domain_mesh_split(&d, &o, m, &rounds, err);
     sq_domain_free(&d);
-    if (st == SQ_OK) st = sq_periodic_link(c->per, *m, o.size, err);
+    if (st == SQ_OK) st = sq_periodic_link(c->per, *m, o.size, SQ_PERIODIC_NODE_REL_TOL, err);
     if (st != SQ_OK) sq_quad_mesh_free(m);
     return st;
 }
@@ -328,29 +331,39 @@ static void transform_text(const sq_periodic_pair *r, char *buf, size_t n)
         snprintf(buf, n, "translation by (%.9g, %.9g)", r->shift[0], r->shift[1]);
 }
 
-/* --periodic: the pairs (periodic.h design 1), logged; their edges held. */
-static sq_status periodic_find(sq_mesh *h, sq_mesher_options *mo, const sq_options *o,
+sq_status sq_api_periodic_find(const cad_face *face, const sq_face_info *info,
+                               const sq_options *o, sq_periodic *per, sq_layout_options *lo,
                                sq_error *err)
 {
-    SQ_TRY(sq_periodic_find(h->face.cad, &h->info, o->periodic, &h->per, err));
+    SQ_TRY(sq_periodic_find(face, info, o->periodic, per, err));
+    char t[160];
+    for (int k = 0; k < per->npairs; k++) {
+        const sq_periodic_pair *r = &per->pairs[k];
+        transform_text(r, t, sizeof t);
+        sq_api_log(o, SQ_LOG_NOTE, "periodic: edge %d is the image of edge %d under the %s (gap "
+                   "%.2g, tolerance %.2g)", r->b, r->a, t, r->gap, per->tol);
+    }
+    for (int k = 0; k < per->ncandidates; k++) {
+        const sq_periodic_pair *r = &per->candidates[k];
+        transform_text(r, t, sizeof t);
+        sq_api_log(o, SQ_LOG_NOTE, "periodic: edges %d and %d also match (%s), not taken: "
+                   "--periodic %d:%d takes them", r->a, r->b, t, r->a, r->b);
+    }
+    lo->field.periodic = lo->trace.periodic = (sq_identification){per->nidentified, per->identified};
+    return SQ_OK;
+}
+
+/* --periodic on the mesh: the pairs found, their edges held. */
+static sq_status periodic_find(sq_mesh *h, sq_mesher_options *mo, sq_layout_options *lo,
+                               const sq_options *o, sq_error *err)
+{
+    SQ_TRY(sq_api_periodic_find(h->face.cad, &h->info, o, &h->per, lo, err));
     int ne = cad_face_num_edges(h->face.cad);
     if (!(h->per_held = malloc(sizeof(int) * ((size_t)ne + 1))))
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     sq_periodic_held(&h->per, h->per_held, ne);
     mo->held_edges = h->per_held;
-    char t[160];
-    for (int k = 0; k < h->per.npairs; k++) {
-        const sq_periodic_pair *r = &h->per.pairs[k];
-        transform_text(r, t, sizeof t);
-        sq_api_log(o, SQ_LOG_NOTE, "periodic: edge %d is the image of edge %d under the %s (gap "
-                   "%.2g, tolerance %.2g)", r->b, r->a, t, r->gap, h->per.tol);
-    }
-    for (int k = 0; k < h->per.ncandidates; k++) {
-        const sq_periodic_pair *r = &h->per.candidates[k];
-        transform_text(r, t, sizeof t);
-        sq_api_log(o, SQ_LOG_NOTE, "periodic: edges %d and %d also match (%s), not taken: "
-                   "--periodic %d:%d takes them", r->a, r->b, t, r->a, r->b);
-    }
+    mo->periodic = lo->field.periodic;
     return SQ_OK;
 }
 
@@ -406,7 +419,7 @@ sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
         st = sq_size_field_create(h->face.cad, o->sizes, o->nsizes, o->size_gradation,
                                   o->curvature_elements, &h->sizes, err);
     mo.sizes = h->sizes;
-    if (st == SQ_OK && o->periodic && !held_edges) st = periodic_find(h, &mo, o, err);
+    if (st == SQ_OK && o->periodic && !held_edges) st = periodic_find(h, &mo, &lo, o, err);
     if (st == SQ_OK) st = run_roads(h, road, &lo, &mo, o, err);
     if (st == SQ_OK && h->per.npairs) st = periodic_identified(h, o, err);
     if (st == SQ_OK) st = sq_api_mesh_arrays(h, err);

@@ -144,6 +144,12 @@ typedef struct {
     {.name = "singularities", .kind = SQ_CLI_WORD, .value = "FILE|natural", .def = "none",         \
      .help = "impose a singularity pattern (docs/singularity-patterns.md) and use its H/theta field", \
      .target = SQ_CLI_AT(opt.singularities)}
+#define SQ_CLI_OPT_PERIODIC                                                                        \
+    {.name = "periodic", .kind = SQ_CLI_WORD, .value = "auto|A:B[,C:D...]", .def = "none",         \
+     .help = "periodic edges: auto, the pairs matching under a translation or rotation; A:B, "   \
+             "edge B the image of edge A (exit 9 if not); the field and separatrices of the "    \
+             "identified domain (translations); MSH $Periodic (docs/domains.md)",                 \
+     .target = SQ_CLI_AT(opt.periodic)}
 #define SQ_CLI_OPT_ALLOW_MISALIGNED                                                                \
     {.name = "allow-misaligned", .kind = SQ_CLI_FLAG, .set = 1, .def = "off",                      \
      .help = "go on when a hole breaks the pattern's holonomy condition",                          \

@@ -32,6 +32,7 @@ static const sq_cli_opt layout_opts[] = {
     SQ_CLI_OPT_MERGE_DISTANCE,
     SQ_CLI_OPT_SINGULARITIES,
     SQ_CLI_OPT_ALLOW_MISALIGNED,
+    SQ_CLI_OPT_PERIODIC,
     SQ_CLI_OPT_SVG("the layout: patches, separatrices, singular points, repairs"),
     SQ_CLI_OPT_REPORT,
     SQ_CLI_OPT_PROGRESS,

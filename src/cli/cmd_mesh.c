@@ -148,10 +148,7 @@ static const sq_cli_opt mesh_opts[] = {
     {.name = "names", .kind = SQ_CLI_CUSTOM, .value = "FILE", .def = "none",
      .help = "boundary names, lines 'EDGE NAME' or 'X Y NAME', over the STEP file's (docs/formats.md)",
      .parse = sq_cli_parse_names_file},
-    {.name = "periodic", .kind = SQ_CLI_WORD, .value = "auto|A:B[,C:D...]", .def = "none",
-     .help = "periodic edges: auto, the pairs matching under a translation or rotation; A:B, "
-             "edge B the image of edge A (exit 9 if not); MSH $Periodic (docs/domains.md)",
-     .target = SQ_CLI_AT(opt.periodic)},
+    SQ_CLI_OPT_PERIODIC,
     {.name = "size-gradation", .kind = SQ_CLI_REAL, .value = "G", .lo = 1.0001, .hi = 10.0,
      .def = "1.3", .help = "bound of the size ratio of neighbouring cells",
      .target = SQ_CLI_AT(opt.size_gradation)},

@@ -15,12 +15,15 @@
  *     the others are candidates, reported, for `A:B` to take.  `A:B` pairs
  *     are checked the same way: a pair that does not match is refused
  *     (SQ_ERR_PERIODIC);
- *  2. meshing: the face as a domain of one face whose interfaces are the
- *     pairs (sq_periodic_domain: the split road's exchange of vertices,
- *     domain.h design 2, maps b's arc lengths to a's), or the layout road
- *     where its vertices happen to agree; either way the nodes of b are then
- *     set to the images of a's (sq_periodic_link), so they coincide to one
- *     rounding of T;
+ *  2. meshing: the layout road, traced on the identified domain where the
+ *     pairs are translations (sq_periodic.identified: the field glued across
+ *     them, separatrices re-entering, a piece and its image one chord
+ *     count; src/field/identified_edges.h), kept where its nodes on the
+ *     pairs correspond; else the face as a domain of one face whose
+ *     interfaces are the pairs (sq_periodic_domain: the split road's
+ *     exchange of vertices, domain.h design 2, maps b's arc lengths to
+ *     a's); either way the nodes of b are then set to the images of a's
+ *     (sq_periodic_link), so they coincide to one rounding of T;
  *  3. the identified domain (sq_periodic_identified): Euler characteristic
  *     and the net index its interior vertices must carry (Gauss–Bonnet). */
 #ifndef SQ_PERIODIC_H
@@ -28,7 +31,14 @@
 
 #include "domain.h"
 #include "face_info.h"
+#include "identified_edges.h"
 #include "quad_mesh.h"
+
+/* nodes within this part of the size are partners (a layout that agrees,
+ * or the split road's exchanged arc lengths, put them within rounding of
+ * the arc-length evaluation; a mesh of that size has no two nodes of one
+ * curve that close) */
+#define SQ_PERIODIC_NODE_REL_TOL 1e-6
 
 /* tolerance of design 1, relative to the face's bounding-box diagonal */
 #define SQ_PERIODIC_REL_TOL 1e-6
@@ -49,6 +59,11 @@ typedef struct {
     sq_periodic_pair *pairs;      /* taken */
     sq_periodic_pair *candidates; /* `auto`: matched pairs of other transforms, not taken */
     double tol;                   /* of design 1, file unit */
+    /* the pairs the guiding field is solved across (identified_edges.h):
+     * the translations, when some edge of the face is left with boundary
+     * data (a torus has none: its field would be zero) */
+    int nidentified;
+    sq_identified_pair *identified;
 } sq_periodic;
 
 /* Design 1: spec "auto" or "A:B[,C:D...]" (edge indices). SQ_ERR_USAGE for a
@@ -68,8 +83,11 @@ sq_status sq_periodic_domain(const cad_face *const *face, const sq_face_info *in
 
 /* Design 2: m's nodes on each pair's b set to T(their partner on a), the
  * links kept in m->periodic; SQ_ERR_LAYOUT if the two sides' nodes do not
- * correspond one to one within 1e-6 of size (a layout that does not agree). */
-sq_status sq_periodic_link(const sq_periodic *p, sq_quad_mesh *m, double size, sq_error *err);
+ * correspond one to one within rel_tol of size: SQ_PERIODIC_NODE_REL_TOL
+ * (the split road's exchanged arc lengths, a layout that agrees) or, on a
+ * layout traced on the identified domain, SQ_IDENTIFIED_CROSSING_REL_TOL. */
+sq_status sq_periodic_link(const sq_periodic *p, sq_quad_mesh *m, double size, double rel_tol,
+                           sq_error *err);
 
 /* Design 3: chi of the identified domain; *index: the net sum of
  * (4 - valence) over its interior vertices that Gauss–Bonnet requires when

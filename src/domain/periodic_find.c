@@ -229,6 +229,24 @@ static sq_status take_groups(const cad_face *f, sq_periodic_pair *all, int n, in
     return SQ_OK;
 }
 
+/* sq_periodic.identified: the translations, if an edge keeps its data. */
+static sq_status identified(const cad_face *face, sq_periodic *p, sq_error *err)
+{
+    int ntrans = 0;
+    for (int k = 0; k < p->npairs; k++) ntrans += !p->pairs[k].rotation;
+    if (2 * ntrans >= cad_face_num_edges(face)) return SQ_OK;
+    p->identified = malloc(sizeof *p->identified * ((size_t)ntrans + 1));
+    if (!p->identified) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < p->npairs; k++) {
+        const sq_periodic_pair *r = &p->pairs[k];
+        if (r->rotation) continue;
+        sq_identified_pair *q = &p->identified[p->nidentified++];
+        q->a = r->a, q->b = r->b;
+        memcpy(q->affine, r->affine, sizeof q->affine);
+    }
+    return SQ_OK;
+}
+
 sq_status sq_periodic_find(const cad_face *face, const sq_face_info *info, const char *spec,
                            sq_periodic *p, sq_error *err)
 {
@@ -250,12 +268,14 @@ sq_status sq_periodic_find(const cad_face *face, const sq_face_info *info, const
                          "within %.3g",
                          p->tol);
     }
+    if (st == SQ_OK) st = identified(face, p, err);
     if (st != SQ_OK) sq_periodic_free(p);
     return st;
 }
 
 void sq_periodic_free(sq_periodic *p)
 {
+    free(p->identified);
     free(p->pairs);
     free(p->candidates);
     memset(p, 0, sizeof *p);

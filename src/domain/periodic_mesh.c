@@ -7,12 +7,6 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* nodes of m within this part of the size are partners (a layout that
- * agrees, or the split road's exchanged arc lengths, put them within
- * rounding of the arc-length evaluation; a mesh of that size has no two
- * nodes of one curve that close) */
-#define PARTNER_REL_TOL 1e-6
-
 sq_status sq_periodic_domain(const cad_face *const *face, const sq_face_info *info,
                              const sq_periodic *p, sq_domain *d, sq_error *err)
 {
@@ -99,12 +93,13 @@ static sq_status link_pair(const sq_periodic_pair *r, const sq_quad_mesh *m, dou
     return st;
 }
 
-sq_status sq_periodic_link(const sq_periodic *p, sq_quad_mesh *m, double size, sq_error *err)
+sq_status sq_periodic_link(const sq_periodic *p, sq_quad_mesh *m, double size, double rel_tol,
+                           sq_error *err)
 {
     sq_quad_mesh_free_periodic(m);
     for (int k = 0; k < p->npairs; k++) {
         sq_quad_periodic l = {0};
-        sq_status st = link_pair(&p->pairs[k], m, PARTNER_REL_TOL * size, &l, err);
+        sq_status st = link_pair(&p->pairs[k], m, rel_tol * size, &l, err);
         if (st == SQ_OK) st = sq_quad_mesh_add_periodic(m, &l, err);
         if (st != SQ_OK) {
             free(l.node), free(l.master_node);

@@ -129,6 +129,32 @@ static sq_status budgeted_triangulation(const cad_face *face, sq_tri_options *tr
     return st;
 }
 
+/* With identified pairs: triangulated until both edges of every pair carry
+ * the same vertices (identified_edges.h design 1), then glued. */
+static sq_status identified_triangulation(const cad_face *face, const sq_tri_options *tri,
+                                          const sq_identification *id, sq_triangulation *out,
+                                          sem_tri_mesh **glued, int *rounds, sq_error *err)
+{
+    sq_identified_points pts = {0};
+    int agreed = 0;
+    sq_status st = SQ_OK;
+    for (*rounds = 0; st == SQ_OK && !agreed && *rounds < SQ_IDENTIFIED_MAX_ROUNDS; ++*rounds) {
+        sq_tri_options t = *tri;
+        t.edge_points = pts.ep;
+        sq_triangulation_free(out);
+        st = budgeted_triangulation(face, &t, out, err);
+        if (st == SQ_OK) st = sq_identified_points_update(face, id, out, &pts, &agreed, err);
+    }
+    sq_identified_points_free(&pts);
+    if (st == SQ_OK && !agreed)
+        st = SQ_FAIL(err, SQ_ERR_GEOMETRY,
+                     "the triangulation put different vertices on the periodic edges after %d "
+                     "rounds; try another --size",
+                     SQ_IDENTIFIED_MAX_ROUNDS);
+    if (st == SQ_OK) st = sq_identified_glue(face, id, out, glued, err);
+    return st;
+}
+
 void sq_field_analysis_free(sq_field_analysis *a)
 {
     if (!a) return;
@@ -156,12 +182,18 @@ sq_status sq_field_analyse(const cad_face *face, const sq_field_options *opt,
         tri.extra_size = opt->grading * tri.size;
         tri.extra_growth = 1.0; /* hp: element size proportional to the distance */
     }
-    if (st == SQ_OK) st = budgeted_triangulation(face, &tri, &out->tri, err);
+    sem_tri_mesh *glued = NULL;
+    if (st == SQ_OK && opt->periodic.npairs > 0)
+        st = identified_triangulation(face, &tri, &opt->periodic, &out->tri, &glued,
+                                      &out->identified_rounds, err);
+    else if (st == SQ_OK)
+        st = budgeted_triangulation(face, &tri, &out->tri, err);
     free(graded);
     double t1 = sq_now();
     if (st == SQ_OK)
-        st = sq_guiding_field_solve(face, &out->info, out->tri.mesh, opt->order, opt->method,
-                                    &out->field, err);
+        st = sq_guiding_field_solve(face, &out->info, out->tri.mesh, glued, opt->order,
+                                    opt->method, &out->field, err);
+    sem_tri_mesh_free(&glued);
     double t2 = sq_now();
     if (st == SQ_OK)
         st = sq_critical_points_find(&out->field, face, &out->points, &out->npoints, err);

@@ -5,6 +5,7 @@
 
 #include "corner_valence.h"
 #include "critical_points.h"
+#include "identified_edges.h"
 #include "triangulate.h"
 
 typedef struct {
@@ -14,6 +15,9 @@ typedef struct {
     double grading;     /* > 0: element size at singular boundary vertices,
                            relative to the triangulation size (hp grading,
                            see sq_singular_vertices); 0: no grading */
+    sq_identification periodic; /* pairs of identified edges (none: npairs 0):
+                                   the field solved on the identified domain
+                                   (identified_edges.h) */
 } sq_field_options;
 
 /* Corners turning by less than this (degrees) are near-straight: the
@@ -49,6 +53,7 @@ typedef struct {
     /* Σ_interior (4 - V) + Σ_vertices (2 - n) against 4χ */
     int ph_lhs, ph_rhs;
     double t_triangulate, t_solve, t_critical; /* seconds */
+    int identified_rounds; /* triangulations until the pairs agreed (0: no pairs) */
 } sq_field_analysis;
 
 sq_status sq_field_analyse(const cad_face *face, const sq_field_options *opt,

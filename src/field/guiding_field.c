@@ -130,19 +130,20 @@ void sq_guiding_field_free(sq_guiding_field *g)
 }
 
 sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
-                                 const sem_tri_mesh *mesh, int order, sq_method method,
-                                 sq_guiding_field *out, sq_error *err)
+                                 const sem_tri_mesh *mesh, const sem_tri_mesh *glued, int order,
+                                 sq_method method, sq_guiding_field *out, sq_error *err)
 {
+    const sem_tri_mesh *sm = glued ? glued : mesh; /* the elements are mesh's either way */
     memset(out, 0, sizeof *out);
     sem_method m = method == SQ_METHOD_AUTO ? sq_guiding_method_auto(info) : (sem_method)method;
     sem_poisson *solver = NULL;
     sem_field *comp[2] = {NULL, NULL};
-    SQ_TRY(sem_poisson_create(mesh, order, m, NULL, NULL, &solver, err));
+    SQ_TRY(sem_poisson_create(sm, order, m, NULL, NULL, &solver, err));
     sq_status st = sem_field_create(mesh, order, 2, &out->uv, err);
     /* u and v share the matrix: one factorization, two right-hand sides */
     bdata_ctx ctx = {.face = face, .status = SQ_OK, .err = err};
     for (int c = 0; c < 2 && st == SQ_OK; c++)
-        st = sem_field_create(mesh, order, 1, &comp[c], err);
+        st = sem_field_create(sm, order, 1, &comp[c], err);
     /* a degenerate field is solved again with the twisted data */
     for (int pass = 0; pass < 2 && st == SQ_OK; pass++) {
         if (pass == 1 && !data_is_degenerate(&ctx, &ctx.phase)) break;

@@ -57,9 +57,12 @@ sem_method sq_guiding_method_auto(const sq_face_info *info);
 sq_status sq_guiding_field_data(const sq_guiding_field *g, const cad_face *face, int edge,
                                 const double x[2], double uv[2], sq_error *err);
 
+/* glued: NULL, or mesh glued along identified edges (sem_tri_mesh_glue):
+ * the field is solved on it, the pairs' unknowns one (identified_edges.h),
+ * and lives on mesh as ever. */
 sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
-                                 const sem_tri_mesh *mesh, int order, sq_method method,
-                                 sq_guiding_field *out, sq_error *err);
+                                 const sem_tri_mesh *mesh, const sem_tri_mesh *glued, int order,
+                                 sq_method method, sq_guiding_field *out, sq_error *err);
 void sq_guiding_field_free(sq_guiding_field *g); /* frees, zeroes the struct */
 
 /* The L2 norms of u and v over the face (reports; not needed to mesh). */

@@ -299,7 +299,10 @@ sq_status sq_layout_run(const cad_face *face, const sq_layout_options *opt, sq_l
     const int natural = opt->singularities && !strcmp(opt->singularities, "natural");
     if (!opt->singularities || natural) st = analyse(face, &opt->field, &out->analysis, err);
     sq_pattern pat = {0};
-    if (st == SQ_OK && !opt->singularities) {
+    if (st == SQ_OK && !opt->singularities && opt->field.periodic.npairs) {
+        /* the H/θ fields know no identified edges: the guiding field's own */
+        st = attempt(face, opt, NULL, 1, out, err);
+    } else if (st == SQ_OK && !opt->singularities) {
         st = two_step(face, opt, out, err);
     } else if (st == SQ_OK) {
         st = natural ? sq_pattern_from_analysis(face, &out->analysis, &pat, err)

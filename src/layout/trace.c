@@ -433,6 +433,60 @@ static void walk_set_free(walk_set *ws)
  * Jacobian 1e-4-1e-2 (corpus 0103, 0215, 0295: 1e-6-5e-5 edges), and the
  * repairs around it run 5 x longer (0311). */
 #define BEND_MIN_EDGE_REL 0.01
+/* Room for one more walker (the arrays grown, refused re-laid for n + 1). */
+static sq_status walk_set_grow(walk_set *ws, sq_error *err)
+{
+    const int n = ws->n, m = n + 1;
+    sq_walker *w = realloc(ws->w, sizeof *w * (size_t)m);
+    if (w) ws->w = w;
+    int *partner = w ? realloc(ws->partner, sizeof *partner * (size_t)m) : NULL;
+    if (partner) ws->partner = partner;
+    sq_separatrix *merged = partner ? realloc(ws->merged, sizeof *merged * (size_t)m) : NULL;
+    if (merged) ws->merged = merged;
+    char *refused = merged ? calloc((size_t)m * m, 1) : NULL;
+    if (!refused) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory (%d separatrices)", m);
+    for (int i = 0; i < n; i++) memcpy(refused + (size_t)i * m, ws->refused + (size_t)i * n, (size_t)n);
+    free(ws->refused);
+    ws->refused = refused;
+    memset(&ws->w[n], 0, sizeof *ws->w);
+    memset(&ws->merged[n], 0, sizeof *ws->merged);
+    ws->partner[n] = -1;
+    return SQ_OK;
+}
+
+/* A separatrix that left through an identified edge re-enters through its
+ * partner (docs/domains.md): a new line from the image of its end, in the
+ * image of its direction (a rigid motion turns it by its angle), started on
+ * the partner edge and carrying the length so far (the length bound of the
+ * whole chain stops one that winds round the identified domain for ever).
+ * The two lines are one separatrix of the identified domain. */
+static sq_status reenter(sq_tracer *tr, walk_set *ws, int i, sq_error *err)
+{
+    const sq_walker *w = &ws->w[i];
+    const sq_identification *id = &tr->opt.periodic;
+    if (w->end.kind != SQ_END_BOUNDARY) return SQ_OK;
+    for (int k = 0; k < id->npairs; k++) {
+        const sq_identified_pair *p = &id->pairs[k];
+        if (w->end.id != p->a && w->end.id != p->b) continue;
+        const int fwd = w->end.id == p->a, to = fwd ? p->b : p->a;
+        double T[6], q[2];
+        if (fwd) memcpy(T, p->affine, sizeof T);
+        else sq_affine_inverse(p->affine, T);
+        sq_affine_map(T, &w->xy[2 * (w->npts - 1)], q);
+        const double Lf = cad_face_edge_length(tr->face, w->end.id);
+        const double Lt = cad_face_edge_length(tr->face, to);
+        const double alpha = w->end_angle + atan2(T[3], T[0]), h = w->h, length = w->length;
+        const sq_sep_end start = {SQ_END_BOUNDARY, to, Lt * (1.0 - w->end.s / Lf)};
+        SQ_TRY(walk_set_grow(ws, err)); /* w moves */
+        sq_walker *nw = &ws->w[ws->n++];
+        SQ_TRY(sq_walker_init(tr, nw, q, alpha, h, err));
+        nw->start = start;
+        nw->length = length;
+        return SQ_OK;
+    }
+    return SQ_OK;
+}
+
 static int starts_separatrices(const sq_tracer *tr, const sq_vertex *v, int quads)
 {
     if (v->smooth || quads < 2) return 0;
@@ -493,8 +547,11 @@ static sq_status run(sq_tracer *tr, const int *vertex_quads, walk_set *ws, sq_er
     /* synchronous advance (§3.3), fronts compared after every round */
     int nactive = ws->n;
     while (nactive > 0) {
-        for (int i = 0; i < ws->n; i++)
-            if (ws->w[i].active) SQ_TRY(sq_walker_step(tr, &ws->w[i], err));
+        for (int i = 0; i < ws->n; i++) {
+            if (!ws->w[i].active) continue;
+            SQ_TRY(sq_walker_step(tr, &ws->w[i], err));
+            if (!ws->w[i].active && tr->opt.periodic.npairs) SQ_TRY(reenter(tr, ws, i, err));
+        }
         for (int i = 0; i < ws->n; i++) {
             if (!ws->w[i].active || ws->partner[i] >= 0) continue;
             for (int q = 0; q < ws->n; q++) {

@@ -27,12 +27,18 @@
  *     pair that cannot reach each other's start is not merged.
  *     `merge_distance` > SQ_TRACE_PASS_STEPS is aggressive merging (§3.3.1);
  *  4. a separatrix longer than max_length ends SQ_END_OPEN (a limit cycle
- *     for the layout's correction to cut). */
+ *     for the layout's correction to cut);
+ *  5. with identified edges (periodic boundaries, identified_edges.h), a
+ *     separatrix that ends on one of them (not at a corner) is continued by
+ *     a new one from the image of its end on the partner edge, in the image
+ *     of its direction, which starts there (SQ_END_BOUNDARY) and carries the
+ *     length so far (the bound of 4 applies to the chain). */
 #ifndef SQ_TRACE_H
 #define SQ_TRACE_H
 
 #include "cross_field.h"
 #include "face_info.h"
+#include "identified_edges.h"
 #include "separatrix.h"
 #include "singularity.h"
 #include "sq_progress.h"
@@ -56,6 +62,8 @@ typedef struct {
     double max_length;     /* length bound; <= 0: 4 * perimeter of the face */
     double tol;            /* Algorithm 1 tolerance on the angle (default 1e-9) */
     sq_progress progress;  /* "trace": lines finished of all (default silent) */
+    sq_identification periodic; /* identified edges (none: npairs 0): a separatrix
+                                   ending on one re-enters through its partner */
 } sq_trace_options;
 
 /* Counters filled by sq_trace_separatrices (may be NULL). */

@@ -19,6 +19,7 @@ void sq_trace_options_default(sq_trace_options *opt)
     opt->max_length = 0.0;
     opt->tol = 1e-9;
     opt->progress = (sq_progress){NULL, NULL};
+    opt->periodic = (sq_identification){0, NULL};
 }
 
 sq_status sq_tracer_init(sq_tracer *tr, const sq_cross_field *field, const cad_face *face,

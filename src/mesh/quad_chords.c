@@ -130,13 +130,44 @@ double qm_measure_fraction(const double *cum, double u)
     return (k + (d > 0.0 ? (target - cum[k]) / d : 0.0)) / SIZE_SAMPLES;
 }
 
+void qm_periodic_partners(const sq_layout *L, const cad_face *face, const sq_mesher_options *o,
+                          double size, int *partner)
+{
+    for (int e = 0; e < L->nedges; e++) partner[e] = -1;
+    for (int k = 0; k < o->periodic.npairs; k++) {
+        const sq_identified_pair *p = &o->periodic.pairs[k];
+        const double La = cad_face_edge_length(face, p->a), Lb = cad_face_edge_length(face, p->b);
+        for (int e = 0; e < L->nedges; e++) {
+            const sq_layout_edge *E = &L->edges[e];
+            if (E->cad_edge != p->a) continue;
+            /* b at L_b − s is T(a at s): the piece [s0, s1] maps to [L_b − s1, L_b − s0] */
+            const double t0 = Lb * (1.0 - E->s1 / La), t1 = Lb * (1.0 - E->s0 / La);
+            for (int f = 0; f < L->nedges; f++) {
+                const sq_layout_edge *F = &L->edges[f];
+                if (F->cad_edge != p->b || partner[f] >= 0 ||
+                    fabs(F->s0 - t0) > SQ_IDENTIFIED_CROSSING_REL_TOL * size || fabs(F->s1 - t1) > SQ_IDENTIFIED_CROSSING_REL_TOL * size)
+                    continue;
+                partner[e] = f, partner[f] = e;
+                break;
+            }
+        }
+    }
+}
+
 /* Design 1: chord quantization. */
 sq_status qm_quantize(const sq_layout *L, const double *len, double size, const int *grade,
-                      const double *need, const sq_mesher_options *o, int *n, sq_error *err)
+                      const double *need, const int *partner, const sq_mesher_options *o, int *n,
+                      sq_error *err)
 {
     for (int e = 0; e < L->nedges; e++) n[e] = edge_segments(len[e], size, grade[e], o);
     for (int changed = 1; changed;) {
         changed = 0;
+        /* a piece of an identified edge and its image: one count, the larger */
+        for (int e = 0; partner && e < L->nedges; e++)
+            if (partner[e] > e && n[e] != n[partner[e]]) {
+                n[e] = n[partner[e]] = n[e] > n[partner[e]] ? n[e] : n[partner[e]];
+                changed = 1;
+            }
         for (int q = 0; q < L->npatches; q++) {
             const sq_layout_patch *p = &L->patches[q];
             for (int k = 0; k < 2; k++) {

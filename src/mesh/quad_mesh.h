@@ -64,8 +64,6 @@ typedef struct {
  * of its master's; dst's links a copy of src's (same node numbering);
  * link appended (its arrays taken); all freed. */
 void sq_quad_mesh_apply_periodic(sq_quad_mesh *m);
-/* q = T(p), T an affine map as sq_quad_periodic.affine holds it. */
-void sq_affine_map(const double T[6], const double p[2], double q[2]);
 sq_status sq_quad_mesh_copy_periodic(sq_quad_mesh *dst, const sq_quad_mesh *src, sq_error *err);
 sq_status sq_quad_mesh_add_periodic(sq_quad_mesh *m, const sq_quad_periodic *link, sq_error *err);
 void sq_quad_mesh_free_periodic(sq_quad_mesh *m);

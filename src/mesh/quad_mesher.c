@@ -128,7 +128,8 @@ sq_status sq_mesh_linear_quads(const cad_face *face, const sq_face_info *info,
 }
 
 /* Design 5: where the quantization nseg gives more than
- * opt->relax_max_quads quads, nseg replaced by the quantization at size
+ * opt->relax_max_quads quads (not with boundary layers, held or periodic
+ * edges: their nodes are not the refinement's), nseg replaced by the quantization at size
  * 2^k, k the least giving at most that many (RELAX_MAX_LEVELS at most);
  * *levels = k (0: nseg kept). */
 #define RELAX_MAX_LEVELS 8
@@ -140,11 +141,11 @@ static sq_status coarse_quantization(const sq_layout *L, const double *elen, dou
     *levels = 0;
     double quads = qm_quantized_quads(L, nseg);
     if (!(opt->relax_max_quads > 0.0) || quads <= opt->relax_max_quads || opt->nbl > 0 ||
-        opt->held_edges)
+        opt->held_edges || opt->periodic.npairs)
         return SQ_OK;
     while (quads > opt->relax_max_quads && *levels < RELAX_MAX_LEVELS) {
         ++*levels;
-        SQ_TRY(qm_quantize(L, elen, ldexp(size, *levels), grade, need, opt, nseg, err));
+        SQ_TRY(qm_quantize(L, elen, ldexp(size, *levels), grade, need, NULL, opt, nseg, err));
         quads = qm_quantized_quads(L, nseg);
     }
     return SQ_OK;
@@ -197,7 +198,14 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
                        : NULL;
     if (st == SQ_OK && opt->sizes && !need) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK && need) st = qm_interior_measure(L, face, opt, size, need, err);
-    if (st == SQ_OK) st = qm_quantize(L, elen, size, grade, need, opt, nseg, err);
+    int *partner = st == SQ_OK && opt->periodic.npairs
+                       ? malloc(sizeof(int) * ((size_t)L->nedges + 1))
+                       : NULL;
+    if (st == SQ_OK && opt->periodic.npairs && !partner)
+        st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK && partner) qm_periodic_partners(L, face, opt, size, partner);
+    if (st == SQ_OK) st = qm_quantize(L, elen, size, grade, need, partner, opt, nseg, err);
+    free(partner);
     /* the quantization can exceed area / size^2 (one segment at least per
      * chord, sides matched): check its own count before allocating */
     double nquads = st == SQ_OK ? qm_quantized_quads(L, nseg) : 0.0;

@@ -76,6 +76,10 @@ typedef struct {
     /* a quantization of more quads is relaxed coarser and refined (design
      * 5); 0: never */
     double relax_max_quads;
+    /* identified edges (periodic, identified_edges.h; none: npairs 0): the
+     * layout road gives a boundary piece on a and its image on b the same
+     * chords */
+    sq_identification periodic;
 } sq_mesher_options;
 
 /* 2e7 quads of order 4 take about 10 GB (25 nodes of 16 bytes each, the

@@ -52,8 +52,15 @@ double qm_measure_fraction(const double *cum, double u);
 /* Segments per edge n[e], opposite sides of every patch matched; with
  * need (NULL: none), no fewer on sides k and k + 2 of patch q than
  * round(need[2 q + k] / size). */
+/* partner (NULL: none): layout edges whose counts are one (qm_periodic_partners). */
 sq_status qm_quantize(const sq_layout *L, const double *len, double size, const int *grade,
-                      const double *need, const sq_mesher_options *o, int *n, sq_error *err);
+                      const double *need, const int *partner, const sq_mesher_options *o, int *n,
+                      sq_error *err);
+/* With identified edges (o->periodic): partner[e] the boundary piece on b
+ * whose ends are the images of piece e's on a (and back) within a quarter
+ * of the size, else -1. */
+void qm_periodic_partners(const sq_layout *L, const cad_face *face, const sq_mesher_options *o,
+                          double size, int *partner);
 
 /* ---- quad_interior.c ---- */
 

@@ -1,16 +1,11 @@
 /* semquad — periodic links of a quad mesh (quad_mesh.h; docs/domains.md):
  * the nodes of one curve are the images of another's under one rigid
  * motion, kept so through copies and resampling. */
+#include "identified_edges.h"
 #include "quad_mesh.h"
 
 #include <stdlib.h>
 #include <string.h>
-
-void sq_affine_map(const double T[6], const double p[2], double q[2])
-{
-    const double q0 = T[0] * p[0] + T[1] * p[1] + T[2], q1 = T[3] * p[0] + T[4] * p[1] + T[5];
-    q[0] = q0, q[1] = q1;
-}
 
 void sq_quad_mesh_apply_periodic(sq_quad_mesh *m)
 {
