@@ -44,6 +44,12 @@
  *     Annular patches (no corner on any cycle) cut along field lines from
  *     the outer loop to the inner one, at points where the field is best
  *     aligned with the inward normal.
+ *  5. the all-quad last resort (sq_layout_all_quad, for `mesh` where 4
+ *     leaves the layout invalid): crossings made nodes, dangling pieces
+ *     removed, every non-quad patch split (a lens cut across, the n-quad
+ *     split, a chord from a corner), the spokes' ends left as T-junctions:
+ *     four-sided patches whose sides may be several layout edges, which
+ *     the chord quantization matches edge by edge.
  *
  * All coordinates are in the face's 2D frame (cad.h). */
 #ifndef SQ_LAYOUT_H
