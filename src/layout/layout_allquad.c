@@ -182,22 +182,24 @@ static sq_status split_across(lay_repair *r, int p, sq_error *err)
  * valence n >= this is a vertex of high valence with thin quads. */
 #define ALLQUAD_CHORD_FIRST 7
 
-/* Patch p split once: a lens cut across; the n-quad split
+/* Patch p split once: a lens cut across, else (a crescent, whose straight
+ * cut leaves it) its n-quad split with bent spokes; the n-quad split
  * (3 <= n < ALLQUAD_CHORD_FIRST) or the chord, the other one where the
  * first cannot be made. */
 static sq_status split_once(lay_repair *r, int p, sq_error *err)
 {
     const int n = r->L->patches[p].ncorners;
-    if (n == 2) return split_across(r, p, err);
     const int chord_first = n < 2 || n >= ALLQUAD_CHORD_FIRST;
     sq_error e1;
-    sq_status st = chord_first ? split_chord(r, p, &e1) : lay_split_centre(r, p, 1, &e1);
+    sq_status st = n == 2        ? split_across(r, p, &e1)
+                   : chord_first ? split_chord(r, p, &e1)
+                                 : lay_split_centre(r, p, 1, &e1);
     if (st == SQ_OK || st == SQ_ERR_INTERNAL || n < 2) {
         if (st != SQ_OK && err) *err = e1;
         return st;
     }
     sq_error e2;
-    st = chord_first ? lay_split_centre(r, p, 1, &e2) : split_chord(r, p, &e2);
+    st = chord_first || n == 2 ? lay_split_centre(r, p, 1, &e2) : split_chord(r, p, &e2);
     if (st == SQ_OK || st == SQ_ERR_INTERNAL) {
         if (st != SQ_OK && err) *err = e2;
         return st;
