@@ -29,7 +29,10 @@ void lay_repair_end(lay_repair *r)
     free(r->bs);
     free(r->bedge);
     free(r->hit);
-    memset(r, 0, sizeof *r);
+    /* the counters stay: the caller reads whether the work bound ended it */
+    r->bxy = r->bs = NULL;
+    r->bedge = NULL;
+    r->hit = NULL;
 }
 
 sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const int *vertex_quads,

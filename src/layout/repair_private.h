@@ -52,7 +52,7 @@ typedef struct {
 
 /* The correction's state for layout L (layout_repair.c): field may be NULL
  * (repair lines then continue straight), opt NULL (defaults); the boundary
- * sampled.  lay_repair_end frees it (not L). */
+ * sampled.  lay_repair_end frees its arrays (not L), keeping its counters. */
 sq_status lay_repair_begin(lay_repair *r, sq_layout *L, const cad_face *face,
                            const sq_face_info *info, const sq_cross_field *field,
                            const sq_trace_options *opt, sq_error *err);
