@@ -178,6 +178,11 @@ static sq_status split_across(lay_repair *r, int p, sq_error *err)
     return lay_straight_sep(L, a, mid[0], mid[1], b, err);
 }
 
+/* Bent spokes only in a patch of at most this many ring points: their
+ * triangulation's medial-axis search is quadratic in them (a patch along a
+ * face of many holes had 2e5, minutes). */
+#define ALLQUAD_BENT_RING_MAX 2000
+
 /* A patch of many corners is cut first: an n-quad split's centre of
  * valence n >= this is a vertex of high valence with thin quads. */
 #define ALLQUAD_CHORD_FIRST 7
@@ -188,18 +193,22 @@ static sq_status split_across(lay_repair *r, int p, sq_error *err)
  * first cannot be made. */
 static sq_status split_once(lay_repair *r, int p, sq_error *err)
 {
-    const int n = r->L->patches[p].ncorners;
+    const sq_layout_patch *P = &r->L->patches[p];
+    const int n = P->ncorners;
     const int chord_first = n < 2 || n >= ALLQUAD_CHORD_FIRST;
+    long npts = 0;
+    for (int h = 0; h < P->nhalf; h++) npts += r->L->edges[P->half[h].edge].npts;
+    const int bent = npts <= ALLQUAD_BENT_RING_MAX;
     sq_error e1;
     sq_status st = n == 2        ? split_across(r, p, &e1)
                    : chord_first ? split_chord(r, p, &e1)
-                                 : lay_split_centre(r, p, 1, &e1);
+                                 : lay_split_centre(r, p, bent, &e1);
     if (st == SQ_OK || st == SQ_ERR_INTERNAL || n < 2) {
         if (st != SQ_OK && err) *err = e1;
         return st;
     }
     sq_error e2;
-    st = chord_first || n == 2 ? lay_split_centre(r, p, 1, &e2) : split_chord(r, p, &e2);
+    st = chord_first || n == 2 ? lay_split_centre(r, p, bent, &e2) : split_chord(r, p, &e2);
     if (st == SQ_OK || st == SQ_ERR_INTERNAL) {
         if (st != SQ_OK && err) *err = e2;
         return st;
