@@ -1,13 +1,13 @@
 /* semquad — the all-quad last resort (layout.h sq_layout_all_quad): where the
- * correction is stuck, every patch of n >= 2 corners is split into n quads
- * around a centre (repair_nsplit.c), and the spokes' ends on the neighbouring
- * patches are left as T-junctions.  A T-junction lies on a straight part of
- * the neighbour's side (it is no corner there), so the neighbour stays a
- * four-sided patch whose side is two layout edges; the chord quantization
- * matches sides edge by edge (src/mesh/quad_chords.c), so the mesh stays
- * conforming, and the mesh vertex at the T-junction is regular (the spoke
- * goes on as a grid line of the neighbour).  Only the patches that were not
- * quads change: the layout's other patches and their corners are kept. */
+ * correction is stuck, crossings become nodes, dangling pieces go, and every
+ * non-quad patch is split (a lens cut across, n quads around a centre, a
+ * chord from a corner); the splits' ends on neighbouring patches are left as
+ * T-junctions.  A T-junction lies on a straight part of the neighbour's side
+ * (no corner there), so the neighbour stays a four-sided patch whose side is
+ * two layout edges; the chord quantization matches sides edge by edge
+ * (src/mesh/quad_chords.c), so the mesh stays conforming, and its vertex at
+ * the T-junction is regular (the spoke goes on as a grid line of the
+ * neighbour).  The layout's quad patches keep their corners. */
 #include "repair_private.h"
 
 #include <math.h>
@@ -15,8 +15,8 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* The first patch that is not a quad: one cycle and n != 4 corners, or
- * several cycles (*annular); -1 when every patch is a quad. */
+/* The first patch that is not a quad: n != 4 corners, or several cycles
+ * (annular); -1 when every patch is a quad. */
 static int first_non_quad(const sq_layout *L)
 {
     for (int p = 0; p < L->npatches; p++)
