@@ -170,11 +170,11 @@ static sq_status all_quad_layout(sq_mesh *h, const sq_layout_options *lo, const 
     }
     h->all_quad = 1;
     snprintf(h->road.reason, sizeof h->road.reason,
-             "the all-quad last resort (%d patches split into quads around a centre); the "
-             "layout was invalid: %.300s",
+             "the all-quad last resort (%d patch splits: cuts, chords, quads around a centre); "
+             "the layout was invalid: %.300s",
              r->layout.stats.all_quad_splits, invalid);
-    sq_api_log(o, SQ_LOG_NOTE, "the layout is invalid (%s); all-quad last resort: %d patches "
-               "split into quads around a centre", invalid, r->layout.stats.all_quad_splits);
+    sq_api_log(o, SQ_LOG_NOTE, "the layout is invalid (%s); all-quad last resort: %d patch "
+               "splits into quads", invalid, r->layout.stats.all_quad_splits);
     return SQ_OK;
 }
 
@@ -188,7 +188,7 @@ static sq_status layout_road(sq_mesh *h, const sq_layout_options *lo, sq_mesher_
     char split[512];
     if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && sq_layout_note(r, split, sizeof split))
         sq_api_log(o, SQ_LOG_NOTE, "%s", split);
-    if (st == SQ_ERR_LAYOUT) st = all_quad_layout(h, lo, o, err);
+    if (st == SQ_ERR_LAYOUT && mo->nbl == 0) st = all_quad_layout(h, lo, o, err); /* not --bl */
     if (st != SQ_OK) return st;
     t->triangulate = r->field.t_triangulate;
     t->solve = r->field.t_solve;
@@ -305,7 +305,8 @@ static void try_split_for_quality(sq_mesh *h, const sq_mesher_options *mo, const
 /* The layout road's mesh on an all-quad last-resort layout: kept only
  * when it is at or above the quality floor and has fewer interior
  * irregular vertices than the split road's (the road that would mesh the
- * face otherwise); else the split road's, with why in road.reason. */
+ * face otherwise), or when the split road fails; else the split road's,
+ * with why in road.reason. */
 static void compare_all_quad(sq_mesh *h, const sq_mesher_options *mo, const sq_options *o)
 {
     double t_layout = h->t.mesh;
@@ -317,8 +318,9 @@ static void compare_all_quad(sq_mesh *h, const sq_mesher_options *mo, const sq_o
     h->road.reason[0] = '\0'; /* a failed split road names it otherwise */
     sq_status st = split_road(h, mo, o, &split_err);
     h->t.mesh += t_layout;
-    int better = lq->min_scaled_jacobian >= o->min_quality &&
-                 (st != SQ_OK || lq->irregular_interior < h->quality.irregular_interior);
+    /* the layout road's also when the split road fails: a mesh either way */
+    int better = st != SQ_OK || (lq->min_scaled_jacobian >= o->min_quality &&
+                                 lq->irregular_interior < h->quality.irregular_interior);
     char tail[200];
     if (st == SQ_OK)
         snprintf(tail, sizeof tail, "%d interior irregular vertices, worst scaled Jacobian %.3g; "
