@@ -96,6 +96,22 @@ def stats(path):
             "inverted_quads": int((sign * qarea <= 0).sum())}
 
 
+def against_report(msh, d):
+    """Why the mesh file disagrees with semquad's report d of it (None: it
+    agrees): the report's quads, none inverted, no triangle, V - E + F equal to
+    the face's chi, the report's interior irregular vertices."""
+    m, g = d["mesh"], stats(msh)
+    if g["quads"] != m["quads"] or g["triangles"] != 0 or g["inverted_quads"] != 0:
+        return "file: %d quads (report %d), %d triangles, %d inverted" % (
+            g["quads"], m["quads"], g["triangles"], g["inverted_quads"])
+    if g["euler_chi"] != d["chi"]:
+        return "V - E + F = %d, chi %d" % (g["euler_chi"], d["chi"])
+    if g["interior_irregular"] != m["irregular_interior_vertices"]:
+        return "%d interior irregular vertices in the file, %d in the report" % (
+            g["interior_irregular"], m["irregular_interior_vertices"])
+    return None
+
+
 if __name__ == "__main__":
     if len(sys.argv) != 2:
         sys.exit(__doc__)

@@ -69,6 +69,7 @@ struct sq_mesh {
     sq_layout_result r;   /* the layout road's, if it ran (reported on that road only);
                              zeroed in a refined mesh */
     sq_road_choice road;
+    int all_quad;         /* the layout road's layout is the all-quad last resort */
     sq_quad_mesh *q;
     sq_quad_quality quality;
     sq_mesh_timings t;

@@ -152,6 +152,35 @@ static sq_status mesh_by_split(void *ctx, const sq_mesher_options *mo, sq_quad_m
     return st;
 }
 
+/* The layout the repairs left invalid, made all-quad (sq_layout_all_quad)
+ * unless a pattern was imposed (its points are the user's: the last
+ * resort would add others).  On success road.reason says what was
+ * invalid; on failure err says both. */
+static sq_status all_quad_layout(sq_mesh *h, const sq_layout_options *lo, const sq_options *o,
+                                 sq_error *err)
+{
+    sq_layout_result *r = &h->r;
+    if (lo->singularities || !r->info || r->layout.npatches == 0) return SQ_ERR_LAYOUT;
+    char invalid[sizeof err->msg];
+    snprintf(invalid, sizeof invalid, "%s", err->msg);
+    sq_error e2 = {0};
+    sq_status st = sq_layout_all_quad(h->face.cad, r->info, &r->layout, &e2);
+    if (st == SQ_ERR_LAYOUT)
+        return SQ_FAIL(err, st, "%s; the all-quad last resort: %s", invalid, e2.msg);
+    if (st != SQ_OK) {
+        *err = e2;
+        return st;
+    }
+    h->all_quad = 1;
+    snprintf(h->road.reason, sizeof h->road.reason,
+             "the all-quad last resort (%d patch splits: cuts, chords, quads around a centre); "
+             "the layout was invalid: %.300s",
+             r->layout.stats.all_quad_splits, invalid);
+    sq_api_log(o, SQ_LOG_NOTE, "the layout is invalid (%s); all-quad last resort: %d patch "
+               "splits into quads", invalid, r->layout.stats.all_quad_splits);
+    return SQ_OK;
+}
+
 /* The layout road: field, layout (sq_layout_run), quads (sq_mesh_layout). */
 static sq_status layout_road(sq_mesh *h, const sq_layout_options *lo, sq_mesher_options *mo,
                              const sq_options *o, sq_error *err)
@@ -162,6 +191,7 @@ static sq_status layout_road(sq_mesh *h, const sq_layout_options *lo, sq_mesher_
     char split[512];
     if ((st == SQ_OK || st == SQ_ERR_LAYOUT) && sq_layout_note(r, split, sizeof split))
         sq_api_log(o, SQ_LOG_NOTE, "%s", split);
+    if (st == SQ_ERR_LAYOUT && mo->nbl == 0) st = all_quad_layout(h, lo, o, err); /* not --bl */
     if (st != SQ_OK) return st;
     t->triangulate = r->field.t_triangulate;
     t->solve = r->field.t_solve;
@@ -180,6 +210,11 @@ static sq_status layout_road(sq_mesh *h, const sq_layout_options *lo, sq_mesher_
     st = mesh_halving(mesh_by_layout, &c, *mo, sq_mesher_default_size(r->layout.face_area), o, h,
                       err);
     mo->field = NULL;
+    if (st != SQ_OK && h->all_quad) {
+        char msg[sizeof err->msg];
+        snprintf(msg, sizeof msg, "%s", err->msg);
+        st = SQ_FAIL(err, st, "%s (on %.300s)", msg, h->road.reason);
+    }
     t->mesh = sq_now() - t1;
     return st;
 }
@@ -270,9 +305,49 @@ static void try_split_for_quality(sq_mesh *h, const sq_mesher_options *mo, const
     put_mesh(h, &layout);
 }
 
+/* The layout road's mesh on an all-quad last-resort layout: kept only
+ * when it is at or above the quality floor and has fewer interior
+ * irregular vertices than the split road's (the road that would mesh the
+ * face otherwise), or when the split road fails; else the split road's,
+ * with why in road.reason. */
+static void compare_all_quad(sq_mesh *h, const sq_mesher_options *mo, const sq_options *o)
+{
+    double t_layout = h->t.mesh;
+    road_mesh layout = take_mesh(h);
+    const sq_quad_quality *lq = &layout.quality;
+    sq_error split_err = {0};
+    char lay_reason[sizeof h->road.reason];
+    snprintf(lay_reason, sizeof lay_reason, "%s", h->road.reason);
+    h->road.reason[0] = '\0'; /* a failed split road names it otherwise */
+    sq_status st = split_road(h, mo, o, &split_err);
+    h->t.mesh += t_layout;
+    /* the layout road's also when the split road fails: a mesh either way */
+    int better = st != SQ_OK || (lq->min_scaled_jacobian >= o->min_quality &&
+                                 lq->irregular_interior < h->quality.irregular_interior);
+    char tail[200];
+    if (st == SQ_OK)
+        snprintf(tail, sizeof tail, "%d interior irregular vertices, worst scaled Jacobian %.3g; "
+                 "the split road's %d, %.3g", lq->irregular_interior, lq->min_scaled_jacobian,
+                 h->quality.irregular_interior, h->quality.min_scaled_jacobian);
+    else
+        snprintf(tail, sizeof tail, "%d interior irregular vertices, worst scaled Jacobian %.3g; "
+                 "the split road failed", lq->irregular_interior, lq->min_scaled_jacobian);
+    sq_api_log(o, SQ_LOG_NOTE, "kept the %s road: all-quad layout %s", better ? "layout" : "split",
+               tail);
+    if (better) {
+        put_mesh(h, &layout); /* frees the split road's */
+        snprintf(h->road.reason, sizeof h->road.reason, "%.300s: %s", lay_reason, tail);
+        return;
+    }
+    free_mesh(&layout);
+    h->road.name = "split";
+    snprintf(h->road.reason, sizeof h->road.reason, "%.300s: %s", lay_reason, tail);
+}
+
 /* Both roads as the options say: the layout road first unless told
  * otherwise, the split road where it gives way or where its mesh is below
- * the quality floor and the split road's is better. */
+ * the quality floor and the split road's is better; an all-quad
+ * last-resort layout's mesh against the split road's. */
 static sq_status run_roads(sq_mesh *h, sq_api_road road, const sq_layout_options *lo,
                            sq_mesher_options *mo, const sq_options *o, sq_error *err)
 {
@@ -288,8 +363,10 @@ static sq_status run_roads(sq_mesh *h, sq_api_road road, const sq_layout_options
         st = SQ_OK;
     }
     if (st == SQ_OK && !strcmp(h->road.name, "split")) return split_road(h, mo, o, err);
-    if (st == SQ_OK && road == SQ_API_ROAD_AUTO && split_road_allowed(lo, mo) &&
-        h->quality.min_scaled_jacobian < o->min_quality)
+    if (st == SQ_OK && road == SQ_API_ROAD_AUTO && split_road_allowed(lo, mo) && h->all_quad)
+        compare_all_quad(h, mo, o);
+    else if (st == SQ_OK && road == SQ_API_ROAD_AUTO && split_road_allowed(lo, mo) &&
+             h->quality.min_scaled_jacobian < o->min_quality)
         try_split_for_quality(h, mo, o);
     return st;
 }

@@ -95,6 +95,8 @@ static void json_layout_keys(sq_json *j, const sq_layout_result *r)
     sq_json_key_int(j, "straight_stems", s->straight_stems);
     sq_json_key_int(j, "separatrices_removed", s->separatrices_removed);
     sq_json_key_int(j, "iterations", s->iterations);
+    /* only on the all-quad last resort: other reports keep their keys */
+    if (s->all_quad_splits > 0) sq_json_key_int(j, "all_quad_splits", s->all_quad_splits);
     /* the pattern's route (layout_pipeline.h, docs/layout.md) */
     const sq_layout_report *rep = &r->report;
     static const char *pattern[] = {"natural", "pairs-cancelled", "gauss-bonnet-minimal",
@@ -248,7 +250,8 @@ sq_status sq_write_layout_svg(const char *path, const sq_layout_result *r, sq_er
                {st->duplicates_removed, "duplicates"},
                {st->crossings_split, "crossings"},
                {st->straight_stems, "straight stems"},
-               {st->separatrices_removed, "separatrices removed"}};
+               {st->separatrices_removed, "separatrices removed"},
+               {st->all_quad_splits, "all-quad splits"}};
     char caption[320];
     int len = snprintf(
         caption, sizeof caption,

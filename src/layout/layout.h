@@ -44,6 +44,12 @@
  *     Annular patches (no corner on any cycle) cut along field lines from
  *     the outer loop to the inner one, at points where the field is best
  *     aligned with the inward normal.
+ *  5. the all-quad last resort (sq_layout_all_quad, for `mesh` where 4
+ *     leaves the layout invalid): crossings made nodes, dangling pieces
+ *     removed, every non-quad patch split (a lens cut across, the n-quad
+ *     split, a chord from a corner), the spokes' ends left as T-junctions:
+ *     four-sided patches whose sides may be several layout edges, which
+ *     the chord quantization matches edge by edge.
  *
  * All coordinates are in the face's 2D frame (cad.h). */
 #ifndef SQ_LAYOUT_H
@@ -57,6 +63,11 @@
 
 /* Interior angles within this of π are not corners (degrees). */
 #define SQ_LAYOUT_CORNER_TOL_DEG 30.0
+/* The all-quad last resort's tolerance at inserted nodes (degrees): a
+ * spoke that leaves a side at 160° still makes a corner of its quad there
+ * (a wide angle, not a triangle split again and again), while a T-junction
+ * on a straight spoke or a smooth separatrix stays no corner. */
+#define SQ_LAYOUT_ALLQUAD_CORNER_TOL_DEG 10.0
 /* A face vertex taking 2 quads (the field's rounding of angle / 90 deg: an
  * angle in about 135-225 deg) within this of π starts no separatrix and is
  * no patch corner: a bend of a patch side with two quads at it, as a smooth
@@ -140,6 +151,8 @@ typedef struct {
     int straight_stems;  /* T-junction stems continued by a straight ray where
                             the field line found no end */
     int iterations;      /* correction passes */
+    int all_quad_splits; /* patches split by the all-quad last resort
+                            (sq_layout_all_quad); 0 on a valid layout */
 } sq_layout_stats;
 
 typedef struct {
@@ -161,6 +174,10 @@ typedef struct {
     sq_layout_patch *patches;
     double face_area; /* from sq_face_info */
     double scale;     /* bounding-box diagonal */
+    double inserted_corner_tol; /* > 0: at the nodes repairs inserted, sectors
+                                   off π by more than this (radians) are
+                                   corners (the all-quad last resort); else
+                                   SQ_LAYOUT_CORNER_TOL_DEG as everywhere */
     sq_layout_stats stats;
 } sq_layout;
 
@@ -205,6 +222,17 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
                           int nsing, const sq_singularity *sing, const sq_separatrix_set *seps,
                           const sq_cross_field *field, const sq_trace_options *opt,
                           sq_layout *out, sq_error *err);
+
+/* The all-quad last resort for a layout sq_layout_build left invalid:
+ * every patch that is not a quad split into n quads around a centre
+ * (n >= 2 corners; layout_allquad.c), the spokes' ends on neighbouring
+ * patches left as T-junctions (no corner there: the neighbour stays a quad).
+ * SQ_OK when every patch then has four corners and one cycle, with no
+ * crossing and no dangling end (valences and T-junctions are not checked:
+ * the mesh's irregular vertices are counted on the mesh); else
+ * SQ_ERR_LAYOUT saying which patch and why, L as far as it got. */
+sq_status sq_layout_all_quad(const cad_face *face, const sq_face_info *info, sq_layout *L,
+                             sq_error *err);
 
 void sq_layout_free(sq_layout *layout); /* frees, zeroes the struct; NULL-safe */
 

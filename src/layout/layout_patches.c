@@ -282,6 +282,15 @@ static int sector_is_corner(const sq_layout *L, int v)
     }
 }
 
+/* Is node v one the repairs inserted (a crossing made a node, a
+ * T-junction, a split's centre)? */
+static int is_inserted(const sq_layout *L, int v)
+{
+    const sq_layout_node *n = &L->nodes[v];
+    return n->kind == SQ_LNODE_CROSSING ||
+           (n->kind == SQ_LNODE_SINGULAR && L->role[n->id] != SQ_LROLE_INPUT);
+}
+
 /* Is node v a bend of a patch side: a face vertex taking 2 quads with no
  * separatrix at it, its angle within SQ_LAYOUT_BEND_TOL_DEG of π (trace.c
  * starts none there; layout_check.c wants it a corner of no patch)? */
@@ -340,7 +349,9 @@ static sq_status fill_patch(const pstate *g, int p, const int *cyc, const cycinf
             double ang = (hin ^ 1) == hout ? 2.0 * M_PI
                                            : wrap2pi(g->dir[hin ^ 1] - g->dir[hout]);
             int v = (hout & 1) ? L->edges[hout / 2].n1 : L->edges[hout / 2].n0;
-            if ((fabs(ang - M_PI) > tol && !is_bend(L, v, ang)) || sector_is_corner(L, v)) {
+            double tv = L->inserted_corner_tol > 0.0 && is_inserted(L, v) ? L->inserted_corner_tol
+                                                                        : tol;
+            if ((fabs(ang - M_PI) > tv && !is_bend(L, v, ang)) || sector_is_corner(L, v)) {
                 P->corners[P->ncorners] = v;
                 P->corner_half[P->ncorners] = kn;
                 P->corner_angle[P->ncorners] = ang;

@@ -6,6 +6,35 @@
 #include <stdlib.h>
 #include <string.h>
 
+sq_status lay_repair_begin(lay_repair *r, sq_layout *L, const cad_face *face,
+                           const sq_face_info *info, const sq_cross_field *field,
+                           const sq_trace_options *opt, sq_error *err)
+{
+    memset(r, 0, sizeof *r);
+    r->L = L;
+    r->face = face;
+    r->info = info;
+    r->field = field;
+    r->tol = 1e-9 * L->scale;
+    r->step = 0.004 * L->scale;
+    double perim = 0.0;
+    for (int e = 0; e < cad_face_num_edges(face); e++) perim += cad_face_edge_length(face, e);
+    r->maxlen = opt && opt->max_length > 0 ? opt->max_length : 4.0 * perim;
+    return lay_sample_boundary(r, err);
+}
+
+void lay_repair_end(lay_repair *r)
+{
+    free(r->bxy);
+    free(r->bs);
+    free(r->bedge);
+    free(r->hit);
+    /* the counters stay: the caller reads whether the work bound ended it */
+    r->bxy = r->bs = NULL;
+    r->bedge = NULL;
+    r->hit = NULL;
+}
+
 sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const int *vertex_quads,
                           int nsing, const sq_singularity *sing, const sq_separatrix_set *seps,
                           const sq_cross_field *field, const sq_trace_options *opt,
@@ -14,17 +43,7 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
     SQ_TRY(sq_layout_graph(face, info, vertex_quads, nsing, sing, seps, out, err));
     sq_layout *L = out;
     lay_repair r;
-    memset(&r, 0, sizeof r);
-    r.L = L;
-    r.face = face;
-    r.info = info;
-    r.field = field;
-    r.tol = 1e-9 * L->scale;
-    r.step = 0.004 * L->scale;
-    double perim = 0.0;
-    for (int e = 0; e < cad_face_num_edges(face); e++) perim += cad_face_edge_length(face, e);
-    r.maxlen = opt && opt->max_length > 0 ? opt->max_length : 4.0 * perim;
-    sq_status st = lay_sample_boundary(&r, err);
+    sq_status st = lay_repair_begin(&r, L, face, info, field, opt, err);
     sq_layout_defects d;
     memset(&d, 0, sizeof d);
     int it;
@@ -54,10 +73,7 @@ sq_status sq_layout_build(const cad_face *face, const sq_face_info *info, const 
             if (err) *err = e2;
         }
     }
-    free(r.bxy);
-    free(r.bs);
-    free(r.bedge);
-    free(r.hit);
+    lay_repair_end(&r);
     if (st == SQ_OK || st == SQ_ERR_LAYOUT) {
         L->stats.separatrices = L->seps.n;
         L->stats.patches = L->npatches;

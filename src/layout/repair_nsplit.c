@@ -323,6 +323,7 @@ sq_status lay_split_centre(lay_repair *r, int p, int bent, sq_error *err)
          * so a split that needs more than a few points per ring point is
          * given up (the trial is undone) */
         in.max_vertices = SPLIT_CDT_POINTS_PER_RING_POINT * nring;
+        in.keep_segments = r->all_quad;
         if (st == SQ_OK) st = cad_cdt_mesh(&in, &o, err);
         free(seg);
         if (st == SQ_OK && !(nb = tri_neighbours(&o)))
@@ -356,7 +357,8 @@ sq_status lay_split_centre(lay_repair *r, int p, int bent, sq_error *err)
     if (st == SQ_OK) st = lay_sing_push(L, cen[0], cen[1], n, SQ_LROLE_MIDPOINT, err);
     int M = L->nsing - 1;
     for (int k = 0; k < n && st == SQ_OK; k++)
-        st = lay_add_spoke(r, M, cen, path[k], np[k], medge[k], mfrac[k], &mid[2 * k], err);
+        st = lay_add_spoke(r, (sq_sep_end){SQ_END_SINGULAR, M, 0.0}, cen, path[k], np[k],
+                           medge[k], mfrac[k], &mid[2 * k], err);
     /* a valence-0 face vertex of the patch now takes one quad */
     for (int k = 0; k < n && st == SQ_OK; k++) {
         const sq_layout_node *v = &L->nodes[P->corners[k]];

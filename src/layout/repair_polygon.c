@@ -58,21 +58,10 @@ static sq_status extra_separatrix(lay_repair *r, int p, int k, const double dir[
     const sq_layout_patch *P = &L->patches[p];
     const sq_layout_node *c = &L->nodes[P->corners[k]];
     sq_sep_end start;
-    switch (c->kind) {
-    case SQ_LNODE_CORNER:
-        start = (sq_sep_end){SQ_END_CORNER, c->id, 0.0};
-        break;
-    case SQ_LNODE_FOOT:
-        start = (sq_sep_end){SQ_END_BOUNDARY, c->id, c->s};
-        break;
-    case SQ_LNODE_SINGULAR:
-        if (L->role[c->id] == SQ_LROLE_TJUNCTION)
-            return SQ_FAIL(err, SQ_ERR_LAYOUT, "corner is a T-junction");
-        start = (sq_sep_end){SQ_END_SINGULAR, c->id, 0.0};
-        break;
-    default:
+    if (c->kind == SQ_LNODE_SINGULAR && L->role[c->id] == SQ_LROLE_TJUNCTION)
+        return SQ_FAIL(err, SQ_ERR_LAYOUT, "corner is a T-junction");
+    if (!lay_node_end(L, P->corners[k], &start))
         return SQ_FAIL(err, SQ_ERR_LAYOUT, "corner is not a node of the set");
-    }
     double shortest = HUGE_VAL;
     for (int j = 0; j < P->ncorners; j++) {
         int a = P->corner_half[j], b = P->corner_half[(j + 1) % P->ncorners];

@@ -21,6 +21,11 @@ typedef struct {
     int trials;    /* patch repairs tried (try_candidate), up to MAX_TRIALS */
     double work;   /* separatrix points the set-level passes visited (WORK_MAX) */
     double lwork;  /* segments the repair lines' steps tested (LINE_WORK_MAX) */
+    int all_quad;  /* the all-quad last resort (layout_allquad.c): the n-quad
+                      split's triangulation never splits the patch's ring (it
+                      needs a path, not Delaunay edges, and tiny sides made
+                      CGAL split on); spokes share an inserted node at their
+                      end (lay_edge_end) */
 } lay_repair;
 
 /* The repairs' work bound, in separatrix points visited by the set-level
@@ -44,6 +49,14 @@ typedef struct {
  * it a line among few segments ran uncounted (stress corpus 0311: 60 s of
  * field evaluations within the bound). */
 #define LINE_STEP_WORK 400.0
+
+/* The correction's state for layout L (layout_repair.c): field may be NULL
+ * (repair lines then continue straight), opt NULL (defaults); the boundary
+ * sampled.  lay_repair_end frees its arrays (not L), keeping its counters. */
+sq_status lay_repair_begin(lay_repair *r, sq_layout *L, const cad_face *face,
+                           const sq_face_info *info, const sq_cross_field *field,
+                           const sq_trace_options *opt, sq_error *err);
+void lay_repair_end(lay_repair *r);
 
 /* Points of the separatrix set (repair_set.c). */
 long lay_set_points(const sq_separatrix_set *S);
@@ -92,16 +105,21 @@ double lay_nearest_pos(const sq_separatrix *s, const double p[2], double *dist);
 sq_status lay_split_sep(sq_layout *L, int k, double pos, const double p[2], int node,
                         sq_error *err);
 void lay_leave_dir(const sq_separatrix *s, int at_end, double d[2], double scale);
+/* The end of a separatrix leaving node v (a face vertex, a foot, a
+ * singular or inserted node); 0 for a crossing or an open end. */
+int lay_node_end(const sq_layout *L, int v, sq_sep_end *end);
 
 /* ---- repair_spoke.c ---- */
 
 int lay_patch_centroid(const sq_layout *L, const sq_layout_patch *P, double cen[2]);
 sq_status lay_side_mid(lay_repair *r, const sq_layout_patch *P, int k, int *edge, double *frac,
                        double xy[2], sq_error *err);
-sq_status lay_straight_sep(sq_layout *L, int M, const double a[2], const double b[2],
+sq_status lay_straight_sep(sq_layout *L, sq_sep_end start, const double a[2], const double b[2],
                            sq_sep_end end, sq_error *err);
-sq_status lay_add_spoke(lay_repair *r, int M, const double cen[2], const double *path, int np,
-                        int edge, double frac, const double p[2], sq_error *err);
+sq_status lay_edge_end(lay_repair *r, int edge, double frac, const double p[2], sq_sep_end *end,
+                       sq_error *err);
+sq_status lay_add_spoke(lay_repair *r, sq_sep_end start, const double cen[2], const double *path,
+                        int np, int edge, double frac, const double p[2], sq_error *err);
 
 /* ---- repair_nsplit.c ---- */
 
@@ -122,6 +140,9 @@ sq_status lay_remove_sep(lay_repair *r, int k, sq_error *err);
 /* ---- the repairs: each applies at most one change (*done) ---- */
 
 sq_status lay_set_repair(lay_repair *r, int *done, sq_error *err);        /* repair_set.c */
+/* the all-quad last resort's (repair_set.c): every crossing of the set
+ * made a node, found once; the pieces that end open removed */
+sq_status lay_set_untangle(lay_repair *r, sq_error *err);
 sq_status lay_cut_annulus(lay_repair *r, int *done, sq_error *err);       /* repair_annulus.c */
 sq_status lay_split_valence2(lay_repair *r, int *done, sq_error *err);    /* repair_triangle.c */
 sq_status lay_split_triangle(lay_repair *r, int *done, sq_error *err);    /* repair_triangle.c */

@@ -71,3 +71,21 @@ void lay_leave_dir(const sq_separatrix *s, int at_end, double d[2], double scale
         d[1] /= l;
     }
 }
+
+int lay_node_end(const sq_layout *L, int v, sq_sep_end *end)
+{
+    const sq_layout_node *c = &L->nodes[v];
+    switch (c->kind) {
+    case SQ_LNODE_CORNER:
+        *end = (sq_sep_end){SQ_END_CORNER, c->id, 0.0};
+        return 1;
+    case SQ_LNODE_FOOT:
+        *end = (sq_sep_end){SQ_END_BOUNDARY, c->id, c->s};
+        return 1;
+    case SQ_LNODE_SINGULAR:
+        *end = (sq_sep_end){SQ_END_SINGULAR, c->id, 0.0};
+        return 1;
+    default:
+        return 0;
+    }
+}

@@ -1,7 +1,8 @@
 /* semquad — the repairs of the separatrix set (Jezdimirović 2021 journal
  * §6.1, §6.3), which need no patches: duplicates removed, ends on another
  * separatrix made T-junctions, limit cycles cut, single crossings made
- * valence-4 nodes, T-junctions continued across. */
+ * valence-4 nodes, T-junctions continued across; for the all-quad last
+ * resort, every crossing made a node at once and open pieces removed. */
 #include "repair_private.h"
 
 #include <math.h>
@@ -260,4 +261,56 @@ sq_status lay_set_repair(lay_repair *r, int *done, sq_error *err)
     if (!*done) SQ_TRY(split_crossing(r, done, err));
     if (!*done) SQ_TRY(repair_tjunction(r, done, err));
     return SQ_OK;
+}
+
+/* The piece of the set that came from separatrix `orig` (from[]) and holds
+ * p inside it (not at an end), and p's position on it; -1 if none. */
+static int piece_through(const sq_layout *L, const int *from, int orig, const double p[2],
+                         double tol, double *pos)
+{
+    int best = -1;
+    double bd = tol;
+    for (int k = 0; k < L->seps.n; k++) {
+        if (from[k] != orig) continue;
+        double d, q = lay_nearest_pos(&L->seps.s[k], p, &d);
+        if (d <= bd && q > 1e-9 && q < L->seps.s[k].npts - 1 - 1e-9) best = k, bd = d, *pos = q;
+    }
+    return best;
+}
+
+sq_status lay_set_untangle(lay_repair *r, sq_error *err)
+{
+    sq_layout *L = r->L;
+    r->hit_ok = 0;
+    SQ_TRY(crossings(r, err));
+    int *from = malloc((size_t)(L->seps.n + 2 * r->nhit + 1) * sizeof *from);
+    if (!from) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < L->seps.n; k++) from[k] = k;
+    sq_status st = SQ_OK;
+    for (int c = 0; c < r->nhit && st == SQ_OK; c++) {
+        const lay_hit *h = &r->hit[c];
+        if (h->enda >= 0 || h->endb >= 0) continue;
+        double p[2] = {h->x, h->y}, pa = 0.0, pb = 0.0;
+        int ka = piece_through(L, from, h->a, p, 1e3 * r->tol, &pa);
+        if (ka < 0) continue;
+        st = lay_sing_push(L, p[0], p[1], 4, SQ_LROLE_CROSSING, err);
+        int node = L->nsing - 1;
+        if (st == SQ_OK) st = lay_split_sep(L, ka, pa, p, node, err);
+        if (st != SQ_OK) break;
+        from[L->seps.n - 1] = h->a;
+        /* a self-crossing's second passage is inside another piece now */
+        int kb = piece_through(L, from, h->b, p, 1e3 * r->tol, &pb);
+        if (kb >= 0) st = lay_split_sep(L, kb, pb, p, node, err);
+        if (kb >= 0 && st == SQ_OK) from[L->seps.n - 1] = h->b;
+        L->stats.crossings_split++;
+    }
+    free(from);
+    /* a piece that ends open dangles into a patch: no side of any */
+    for (int k = L->seps.n - 1; k >= 0 && st == SQ_OK; k--)
+        if (L->seps.s[k].start.kind == SQ_END_OPEN || L->seps.s[k].end.kind == SQ_END_OPEN) {
+            lay_sep_remove(&L->seps, k);
+            L->stats.separatrices_removed++;
+        }
+    r->hit_ok = 0;
+    return st;
 }

@@ -63,10 +63,10 @@ sq_status lay_side_mid(lay_repair *r, const sq_layout_patch *P, int k, int *edge
     return sq_layout_edge_point(r->L, r->face, *edge, *frac, xy, err);
 }
 
-/* Separatrix from inserted node M along the path xy[np] (each segment cut
- * into 16 pieces), ending in `end`. */
-static sq_status path_sep(sq_layout *L, int M, const double *xy, int np, sq_sep_end end,
-                          sq_error *err)
+/* Separatrix from `start` along the path xy[np] (each segment cut into 16
+ * pieces), ending in `end`. */
+static sq_status path_sep(sq_layout *L, sq_sep_end start, const double *xy, int np,
+                          sq_sep_end end, sq_error *err)
 {
     enum { PIECES = 16 };
     int n = (np - 1) * PIECES + 1;
@@ -79,44 +79,67 @@ static sq_status path_sep(sq_layout *L, int M, const double *xy, int np, sq_sep_
             q[2 * (i * PIECES + j)] = a[0] + t * (b[0] - a[0]);
             q[2 * (i * PIECES + j) + 1] = a[1] + t * (b[1] - a[1]);
         }
-    sq_status st = lay_sep_push(&L->seps, q, n, (sq_sep_end){SQ_END_SINGULAR, M, 0.0}, end, err);
+    sq_status st = lay_sep_push(&L->seps, q, n, start, end, err);
     free(q);
     return st;
 }
 
-/* Straight separatrix from inserted node M (at a) to b, ending in `end`. */
-sq_status lay_straight_sep(sq_layout *L, int M, const double a[2], const double b[2],
+/* Straight separatrix from `start` (at a) to b, ending in `end`. */
+sq_status lay_straight_sep(sq_layout *L, sq_sep_end start, const double a[2], const double b[2],
                            sq_sep_end end, sq_error *err)
 {
     double xy[4] = {a[0], a[1], b[0], b[1]};
-    return path_sep(L, M, xy, 2, end, err);
+    return path_sep(L, start, xy, 2, end, err);
 }
 
-/* A spoke from inserted node M along path[np] (from M to point p on layout
- * edge `edge` at fraction frac; NULL: straight from cen): on the boundary it
- * ends in a foot, on a separatrix in a new T-junction, repaired next (the
- * "patches influenced" of Jezdimirović §6.3). */
-sq_status lay_add_spoke(lay_repair *r, int M, const double cen[2], const double *path, int np,
-                        int edge, double frac, const double p[2], sq_error *err)
+/* An inserted node within this many times the repairs' tolerance of a
+ * spoke's end takes it, in the all-quad last resort: two patches splitting
+ * the two sides of one piece (a cut across a two-corner patch) share its
+ * midpoint, as a midpoint subdivision does. */
+#define SHARED_END_TOL 1e3
+
+/* The end of a new separatrix at point p of layout edge `edge` (fraction
+ * frac): a foot on the boundary; on a separatrix a new T-junction (the
+ * separatrix split there), or, in the all-quad last resort, an inserted
+ * node already there. */
+sq_status lay_edge_end(lay_repair *r, int edge, double frac, const double p[2], sq_sep_end *end,
+                       sq_error *err)
 {
     sq_layout *L = r->L;
     const sq_layout_edge *E = &L->edges[edge];
-    sq_sep_end end;
     if (E->cad_edge >= 0) {
-        end = (sq_sep_end){SQ_END_BOUNDARY, E->cad_edge, E->s0 + frac * (E->s1 - E->s0)};
-    } else {
-        double q[2] = {p[0], p[1]}, dist;
-        /* the edge's separatrix, unless an earlier spoke split it before q */
-        int sep = E->sep;
-        double pos = lay_nearest_pos(&L->seps.s[sep], q, &dist);
-        for (int k = 0; k < L->seps.n && dist > r->tol; k++) {
-            double d, ps = lay_nearest_pos(&L->seps.s[k], q, &d);
-            if (d < dist) sep = k, pos = ps, dist = d;
-        }
-        SQ_TRY(lay_sing_push(L, q[0], q[1], 3, SQ_LROLE_TJUNCTION, err));
-        end = (sq_sep_end){SQ_END_SINGULAR, L->nsing - 1, 0.0};
-        SQ_TRY(lay_split_sep(L, sep, pos, q, L->nsing - 1, err));
+        *end = (sq_sep_end){SQ_END_BOUNDARY, E->cad_edge, E->s0 + frac * (E->s1 - E->s0)};
+        return SQ_OK;
     }
-    if (path) return path_sep(L, M, path, np, end, err);
-    return lay_straight_sep(L, M, cen, p, end, err);
+    for (int k = 0; r->all_quad && k < L->nsing; k++)
+        if (L->role[k] != SQ_LROLE_INPUT &&
+            hypot(L->sing[k].x - p[0], L->sing[k].y - p[1]) <= SHARED_END_TOL * r->tol) {
+            *end = (sq_sep_end){SQ_END_SINGULAR, k, 0.0};
+            L->sing[k].valence++;
+            return SQ_OK;
+        }
+    double q[2] = {p[0], p[1]}, dist;
+    /* the edge's separatrix, unless an earlier spoke split it before q */
+    int sep = E->sep;
+    double pos = lay_nearest_pos(&L->seps.s[sep], q, &dist);
+    for (int k = 0; k < L->seps.n && dist > r->tol; k++) {
+        double d, ps = lay_nearest_pos(&L->seps.s[k], q, &d);
+        if (d < dist) sep = k, pos = ps, dist = d;
+    }
+    SQ_TRY(lay_sing_push(L, q[0], q[1], 3, SQ_LROLE_TJUNCTION, err));
+    *end = (sq_sep_end){SQ_END_SINGULAR, L->nsing - 1, 0.0};
+    return lay_split_sep(L, sep, pos, q, L->nsing - 1, err);
+}
+
+/* A spoke from `start` (an inserted node, or a patch corner) along
+ * path[np] (from it to point p on layout edge `edge` at fraction frac;
+ * NULL: straight from cen), ending as lay_edge_end says: a T-junction is
+ * repaired next (the "patches influenced" of Jezdimirović §6.3). */
+sq_status lay_add_spoke(lay_repair *r, sq_sep_end start, const double cen[2], const double *path,
+                        int np, int edge, double frac, const double p[2], sq_error *err)
+{
+    sq_sep_end end;
+    SQ_TRY(lay_edge_end(r, edge, frac, p, &end, err));
+    if (path) return path_sep(r->L, start, path, np, end, err);
+    return lay_straight_sep(r->L, start, cen, p, end, err);
 }

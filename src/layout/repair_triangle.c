@@ -81,9 +81,10 @@ sq_status lay_split_valence2(lay_repair *r, int *done, sq_error *err)
         }
         SQ_TRY(lay_sing_push(L, cen[0], cen[1], 3, SQ_LROLE_VALENCE2, err));
         int M = L->nsing - 1;
-        SQ_TRY(lay_straight_sep(L, M, cen, vxy, (sq_sep_end){SQ_END_CORNER, vid, 0.0}, err));
+        const sq_sep_end from_m = {SQ_END_SINGULAR, M, 0.0};
+        SQ_TRY(lay_straight_sep(L, from_m, cen, vxy, (sq_sep_end){SQ_END_CORNER, vid, 0.0}, err));
         for (int j = 0; j < 2; j++)
-            SQ_TRY(lay_add_spoke(r, M, cen, NULL, 0, medge[j], mfrac[j], mid[j], err));
+            SQ_TRY(lay_add_spoke(r, from_m, cen, NULL, 0, medge[j], mfrac[j], mid[j], err));
         L->vertex_quads[vid] = 2;
         L->stats.valence2_split++;
         *done = 1;
