@@ -642,7 +642,10 @@ sq_status sq_mesh_write_format(const sq_mesh *m, const char *path, const char *f
     if (!write)
         return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)", path);
     double t = sq_now();
-    sq_status st = write(path, m->q, &m->progress, err);
+    /* text MSH, the format of large meshes, is formatted on threads */
+    sq_status st = write == sq_write_msh
+                       ? sq_write_msh_threads(path, m->q, m->threads, &m->progress, err)
+                       : write(path, m->q, &m->progress, err);
     *m->t_write += sq_now() - t;
     return st;
 }

@@ -174,7 +174,8 @@ static const sq_cli_opt mesh_opts[] = {
      .help = "refuse, before meshing, a size giving more quads (and name one that fits)",
      .target = SQ_CLI_AT(opt.max_quads)},
     {.name = "threads", .kind = SQ_CLI_CUSTOM, .value = "N", .def = "SEMQUAD_THREADS, else every processor",
-     .help = "threads for a large mesh's refinement and the quality pass (0: every processor); "
+     .help = "threads for a large mesh's refinement, the quality pass and the MSH text's "
+             "formatting (0: every processor); "
              "the files are byte-identical for every N",
      .parse = parse_threads},
     {.name = "relax-max-quads", .kind = SQ_CLI_REAL, .value = "N", .lo = 0.0, .hi = 1e15,

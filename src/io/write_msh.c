@@ -1,4 +1,5 @@
 #include "write_msh.h"
+#include "write_lines.h"
 
 #include "format_number.h"
 #include "msh_entities.h"
@@ -37,8 +38,8 @@ typedef struct {
     const sq_quad_mesh *m;  /* equispaced */
     int *ij, lo[11];
     sq_msh_entities ent;
-    const sq_progress *progress;
-    long done, total;
+    sq_write_count count; /* progress: nodes and elements written */
+    int threads;          /* text formatted on this many (write_lines.h) */
 } msh_writer;
 
 /* Binary MSH 4.1 stores numbers in the writer's byte order, sizes as
@@ -132,9 +133,35 @@ static void entities(msh_writer *w, int *bound)
     fputs(w->binary ? "\n$EndEntities\n" : "$EndEntities\n", w->fp);
 }
 
+/* The text lines of a node block: node[k]'s tag, then (k >= n) node[k -
+ * n]'s coordinates. */
+typedef struct {
+    const sq_quad_mesh *m;
+    const int *node;
+    long n;
+} node_lines;
+
+static int node_tag_line(const void *ctx, long k, char *buf)
+{
+    const node_lines *l = ctx;
+    int len = sq_format_long(buf, l->node[k] + 1);
+    buf[len++] = '\n';
+    return len;
+}
+
+static int node_xy_line(const void *ctx, long k, char *buf)
+{
+    const node_lines *l = ctx;
+    const double *x = &l->m->xy[2 * (size_t)l->node[k]];
+    int len = sq_format_xy0(buf, x[0], x[1]);
+    buf[len++] = '\n';
+    return len;
+}
+
 /* One block of nodes: entity (dim, tag), not parametric, node[n] (mesh
  * indices, tags + 1). */
-static void node_block(msh_writer *w, int dim, int tag, const int *node, int n)
+static sq_status node_block(msh_writer *w, int dim, int tag, const int *node, int n,
+                            sq_error *err)
 {
     const sq_quad_mesh *m = w->m;
     if (w->binary) {
@@ -143,28 +170,20 @@ static void node_block(msh_writer *w, int dim, int tag, const int *node, int n)
         for (int k = 0; k < n; k++) {
             double x[3] = {m->xy[2 * (size_t)node[k]], m->xy[2 * (size_t)node[k] + 1], 0.0};
             fwrite(x, sizeof *x, 3, w->fp);
-            sq_progress_every(w->progress, "write", ++w->done, w->total);
+            sq_progress_every(w->count.progress, "write", ++w->count.done, w->count.total);
         }
-        return;
+        return SQ_OK;
     }
     fprintf(w->fp, "%d %d 0 %d\n", dim, tag, n);
-    char line[SQ_XY0_CHARS + 1];
-    for (int k = 0; k < n; k++) {
-        int len = sq_format_long(line, node[k] + 1);
-        line[len++] = '\n';
-        fwrite(line, 1, (size_t)len, w->fp);
-    }
-    for (int k = 0; k < n; k++) {
-        int len = sq_format_xy0(line, m->xy[2 * (size_t)node[k]], m->xy[2 * (size_t)node[k] + 1]);
-        line[len++] = '\n';
-        fwrite(line, 1, (size_t)len, w->fp);
-        sq_progress_every(w->progress, "write", ++w->done, w->total);
-    }
+    node_lines l = {m, node, n};
+    SQ_TRY(sq_write_lines(w->fp, n, 24, node_tag_line, &l, w->threads, NULL, err));
+    return sq_write_lines(w->fp, n, SQ_XY0_CHARS + 1, node_xy_line, &l, w->threads, &w->count,
+                          err);
 }
 
 /* Nodes: one block per entity holding nodes (points, curves, surfaces),
  * node tag = mesh index + 1 (so not contiguous within a block). */
-static void nodes(msh_writer *w)
+static sq_status nodes(msh_writer *w, sq_error *err)
 {
     const sq_msh_entities *e = &w->ent;
     int nent = e->npoints + e->ncurves + e->nsurfaces, nblocks = 0;
@@ -179,9 +198,12 @@ static void nodes(msh_writer *w)
     for (int k = 0; k < nent; k++) {
         int dim = k < e->npoints ? 0 : k < e->npoints + e->ncurves ? 1 : 2;
         int tag = k - (dim == 0 ? 0 : dim == 1 ? e->npoints : e->npoints + e->ncurves) + 1;
-        if (e->first[k + 1] > e->first[k]) node_block(w, dim, tag, &e->node[e->first[k]], e->first[k + 1] - e->first[k]);
+        if (e->first[k + 1] > e->first[k])
+            SQ_TRY(node_block(w, dim, tag, &e->node[e->first[k]], e->first[k + 1] - e->first[k],
+                              err));
     }
     fputs(w->binary ? "\n$EndNodes\n" : "$EndNodes\n", w->fp);
+    return SQ_OK;
 }
 
 /* A block header: dimension, entity, element type, count. */
@@ -194,8 +216,21 @@ static void block(msh_writer *w, int dim, int tag, int type, int n)
     put_int(w, dim), put_int(w, tag), put_int(w, type), put_size(w, (size_t)n);
 }
 
-/* One element: its tag and n nodes (mesh indices, written + 1), one record
- * in rec (room for n + 1). */
+/* An element's text line: its tag and n nodes (mesh indices, written + 1)
+ * into line (ELEMENT_CHARS); its length. */
+#define ELEMENT_CHARS (12 * (121 + 1) + 1) /* up to 121 nodes (order 10) of 11 characters */
+static int element_line(char *line, int tag, const int *c, const int *which, int n)
+{
+    int len = sq_format_long(line, tag);
+    for (int k = 0; k < n; k++) {
+        line[len++] = ' ';
+        len += sq_format_long(line + len, c[which[k]] + 1);
+    }
+    line[len++] = '\n';
+    return len;
+}
+
+/* One element, one record in rec (room for n + 1) when binary. */
 static void element(msh_writer *w, int tag, const int *c, const int *which, int n, size_t *rec)
 {
     if (w->binary) {
@@ -203,21 +238,32 @@ static void element(msh_writer *w, int tag, const int *c, const int *which, int 
         for (int k = 0; k < n; k++) rec[k + 1] = (size_t)c[which[k]] + 1;
         fwrite(rec, sizeof *rec, (size_t)n + 1, w->fp);
     } else {
-        char line[12 * (121 + 1) + 1]; /* up to 121 nodes (order 10) of 11 characters */
-        int len = sq_format_long(line, tag);
-        for (int k = 0; k < n; k++) {
-            line[len++] = ' ';
-            len += sq_format_long(line + len, c[which[k]] + 1);
-        }
-        line[len++] = '\n';
-        fwrite(line, 1, (size_t)len, w->fp);
+        char line[ELEMENT_CHARS];
+        fwrite(line, 1, (size_t)element_line(line, tag, c, which, n), w->fp);
     }
-    sq_progress_every(w->progress, "write", ++w->done, w->total);
+    sq_progress_every(w->count.progress, "write", ++w->count.done, w->count.total);
+}
+
+/* The text lines of surface `region`'s quads: quad k's, or none when it
+ * lies in another surface. */
+typedef struct {
+    const sq_quad_mesh *m;
+    const int *which;
+    int region;
+} quad_lines;
+
+static int quad_line(const void *ctx, long k, char *buf)
+{
+    const quad_lines *l = ctx;
+    const sq_quad_mesh *m = l->m;
+    if (m->region && m->region[k] != l->region) return 0;
+    int npe = (m->order + 1) * (m->order + 1);
+    return element_line(buf, (int)k + 1, &m->conn[(size_t)k * npe], l->which, npe);
 }
 
 /* Elements: the quads (tags 1..nquads) per surface, then a block of lines
  * per curve; which[] holds the local nodes in Gmsh's order. */
-static void elements(msh_writer *w, int *which, size_t *rec)
+static sq_status elements(msh_writer *w, int *which, size_t *rec, sq_error *err)
 {
     const sq_quad_mesh *m = w->m;
     int Q = m->order, npe = (Q + 1) * (Q + 1), nt = m->ntags, ns = m->nregions > 0 ? m->nregions : 1;
@@ -234,7 +280,11 @@ static void elements(msh_writer *w, int *which, size_t *rec)
         int nr = 0;
         for (int q = 0; q < m->nquads; q++) nr += !m->region || m->region[q] == r;
         block(w, 2, r + 1, sq_gmsh_quad_type(Q), nr);
-        for (int q = 0; q < m->nquads; q++)
+        quad_lines l = {m, which, r};
+        if (!w->binary)
+            SQ_TRY(sq_write_lines(w->fp, m->nquads, ELEMENT_CHARS, quad_line, &l, w->threads,
+                                  &w->count, err));
+        for (int q = 0; w->binary && q < m->nquads; q++)
             if (!m->region || m->region[q] == r) element(w, q + 1, &m->conn[(size_t)q * npe], which, npe, rec);
     }
     int tag = m->nquads;
@@ -248,6 +298,7 @@ static void elements(msh_writer *w, int *which, size_t *rec)
         }
     }
     fputs(w->binary ? "\n$EndElements\n" : "$EndElements\n", w->fp);
+    return SQ_OK;
 }
 
 /* Periodic links (docs/domains.md): per link the curve entity, its
@@ -285,13 +336,13 @@ static void periodic(msh_writer *w)
     fputs(w->binary ? "\n$EndPeriodic\n" : "$EndPeriodic\n", w->fp);
 }
 
-static sq_status write_msh(const char *path, const sq_quad_mesh *m0, int binary,
+static sq_status write_msh(const char *path, const sq_quad_mesh *m0, int binary, int threads,
                            const sq_progress *progress, sq_error *err)
 {
     SQ_TRY(sq_quad_mesh_check(m0, err));
-    msh_writer w = {.binary = binary, .m0 = m0, .m = m0, .progress = progress,
-                    .total = (long)m0->nnodes + m0->nquads + m0->nbnd};
-    sq_progress_every(progress, "write", 0, w.total);
+    msh_writer w = {.binary = binary, .m0 = m0, .m = m0, .threads = threads,
+                    .count = {progress, 0, (long)m0->nnodes + m0->nquads + m0->nbnd}};
+    sq_progress_every(progress, "write", 0, w.count.total);
     sq_quad_mesh *eq = NULL;
     if (m0->nodes != SQ_NODES_EQUISPACED) {
         SQ_TRY(sq_quad_mesh_resample(m0, SQ_NODES_EQUISPACED, &eq, err));
@@ -318,10 +369,10 @@ static sq_status write_msh(const char *path, const sq_quad_mesh *m0, int binary,
         fputs("$EndMeshFormat\n", w.fp);
         physical_names(&w);
         entities(&w, bound);
-        nodes(&w);
-        elements(&w, which, rec);
-        periodic(&w);
-        st = sq_outfile_commit(&f, err);
+        st = nodes(&w, err);
+        if (st == SQ_OK) st = elements(&w, which, rec, err);
+        if (st == SQ_OK) periodic(&w);
+        if (st == SQ_OK) st = sq_outfile_commit(&f, err);
     }
     sq_outfile_abort(&f);
     sq_quad_mesh_free(&eq);
@@ -336,11 +387,17 @@ static sq_status write_msh(const char *path, const sq_quad_mesh *m0, int binary,
 sq_status sq_write_msh(const char *path, const sq_quad_mesh *m, const sq_progress *progress,
                        sq_error *err)
 {
-    return write_msh(path, m, 0, progress, err);
+    return write_msh(path, m, 0, 1, progress, err);
+}
+
+sq_status sq_write_msh_threads(const char *path, const sq_quad_mesh *m, int threads,
+                               const sq_progress *progress, sq_error *err)
+{
+    return write_msh(path, m, 0, threads, progress, err);
 }
 
 sq_status sq_write_msh_binary(const char *path, const sq_quad_mesh *m,
                               const sq_progress *progress, sq_error *err)
 {
-    return write_msh(path, m, 1, progress, err);
+    return write_msh(path, m, 1, 1, progress, err);
 }

@@ -27,6 +27,11 @@
  * boundary lines) written of all, at most about 100 events. */
 sq_status sq_write_msh(const char *path, const sq_quad_mesh *m, const sq_progress *progress,
                        sq_error *err);
+/* The same file with its node and element lines formatted on `threads`
+ * threads (0: the processors online; write_lines.h): the same bytes for
+ * every count. */
+sq_status sq_write_msh_threads(const char *path, const sq_quad_mesh *m, int threads,
+                               const sq_progress *progress, sq_error *err);
 /* The same file in binary MSH 4.1: the same nodes, elements, tags and
  * groups, coordinates bit for bit. */
 sq_status sq_write_msh_binary(const char *path, const sq_quad_mesh *m,
