@@ -467,7 +467,9 @@ SQ_API sq_status sq_mesh_describe(const sq_mesh *m, char **text, sq_error *err);
 SQ_API sq_status sq_mesh_write(const sq_mesh *m, const char *path, sq_error *err);
 /* The same in the format named ("msh", "xml", "vtu" or "svg"; NULL: by
  * the extension; "msh-binary": binary MSH 4.1, the same groups, nodes and
- * elements as "msh"), whatever path's name; path "-" is standard output. */
+ * elements as "msh"; "xml-compressed": Nektar++'s compressed XML, the same
+ * vertices, edges, quads and curves as "xml", COMPRESSED="B64Z-LittleEndian"),
+ * whatever path's name; path "-" is standard output. */
 SQ_API sq_status sq_mesh_write_format(const sq_mesh *m, const char *path, const char *format,
                                       sq_error *err);
 /* 1 if sq_mesh_write knows path's format, else 0 (check before meshing). */

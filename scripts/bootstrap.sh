@@ -8,6 +8,7 @@
 # (python/) returns its arrays in, python3-meshio what Mesh.to_meshio
 # converts to; t960 runs the package.  parallel (GNU parallel) runs batches
 # on one machine: scripts/mesh_parallel.sh, t906 (docs/scale-out.md).
+# zlib1g-dev compresses the compressed Nektar++ XML (--binary with xml).
 # Idempotent: quiet when everything is present; runs apt-get update only when
 # something is missing.
 set -eu
@@ -15,7 +16,7 @@ PKGS="meson ninja-build pkg-config gcc g++ \
 libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev \
 libocct-data-exchange-dev \
 libcgal-dev libgmp-dev libmpfr-dev \
-libgsl-dev liblapacke-dev libopenblas-dev libopenblas-serial-dev libsuitesparse-dev \
+libgsl-dev liblapacke-dev zlib1g-dev libopenblas-dev libopenblas-serial-dev libsuitesparse-dev \
 librsvg2-bin \
 python3-gmsh gmsh python3-numpy python3-meshio parallel"
 missing=""

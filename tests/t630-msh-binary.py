@@ -13,8 +13,8 @@ mesh written as MSH 4.1 text and binary, both read by Gmsh's own reader
 for the half disc at order 4 with its two edges named (--names), and a
 mesh of three faces sharing edges (tests/domain_faces.py three_row: one
 surface entity per face); meshio's reader (if installed) agrees too.  The binary file begins "$MeshFormat\\n4.1 1 8\\n"
-and the int 1 (the byte-order mark); --binary with an XML or VTU output
-exits 2 and writes nothing.
+and the int 1 (the byte-order mark); --binary with a VTU output exits 2
+and writes nothing (with XML it writes compressed Nektar++ XML: t641).
 usage: t630-msh-binary.py SEMQUAD EXAMPLES_DIR DOMAIN_FACES_PY"""
 import os
 import struct
@@ -108,7 +108,7 @@ def main():
               os.path.join(d, "row_b.msh")])
         compare("three_row", os.path.join(d, "row.msh"), os.path.join(d, "row_b.msh"))
 
-        for out in ("x.xml", "x.vtu"):
+        for out in ("x.vtu",):
             r = subprocess.run([SQ, "mesh", disc, "--binary", "-o", os.path.join(d, out), "-q"],
                                capture_output=True, text=True)
             if r.returncode != 2 or os.path.exists(os.path.join(d, out)):

@@ -612,10 +612,11 @@ static const struct {
                     {"xml", ".xml", sq_write_nektar},
                     {"vtu", ".vtu", sq_write_quad_vtu},
                     {"svg", ".svg", sq_write_quad_svg},
-                    {"msh-binary", NULL, sq_write_msh_binary}};
+                    {"msh-binary", NULL, sq_write_msh_binary},
+                    {"xml-compressed", NULL, sq_write_nektar_compressed}};
 
-/* The writer of format ("msh", "xml", ..., "msh-binary"), or of path's
- * extension when format is NULL (binary only by its name). */
+/* The writer of format ("msh", "xml", ..., "msh-binary", "xml-compressed"),
+ * or of path's extension when format is NULL (the last two only by name). */
 static mesh_writer writer_of(const char *path, const char *format)
 {
     for (size_t k = 0; k < sizeof mesh_formats / sizeof *mesh_formats; k++) {
@@ -638,7 +639,7 @@ sq_status sq_mesh_write_format(const sq_mesh *m, const char *path, const char *f
 {
     mesh_writer write = writer_of(path, format);
     if (!write && format)
-        return SQ_FAIL(err, SQ_ERR_USAGE, "unknown mesh format '%s' (use msh, msh-binary, xml or vtu)", format);
+        return SQ_FAIL(err, SQ_ERR_USAGE, "unknown mesh format '%s' (use msh, msh-binary, xml, xml-compressed or vtu)", format);
     if (!write)
         return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)", path);
     double t = sq_now();

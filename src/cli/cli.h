@@ -234,7 +234,7 @@ void sq_cli_progress_clear(sq_cli_progress *p);
  * them all). sq_cli_family_faces refuses a family of several faces before
  * meshing. */
 /* The format sq_mesh_write_format gets for mesh's file: --format's (NULL:
- * by the extension), "msh-binary" with --binary (cmd_mesh.c). */
+ * by the extension), "msh-binary" or "xml-compressed" with --binary (cmd_mesh.c). */
 const char *sq_cli_mesh_format(const sq_cli_args *a);
 sq_status sq_cli_family_check(sq_cli_args *a, char *manifest, size_t n, sq_error *err);
 sq_status sq_cli_family_faces(const sq_cli_args *a, const sq_model *m, sq_error *err);

@@ -37,6 +37,14 @@ static sq_status parse_faces(const char *opt, const char *val, sq_cli_args *a, s
     return sq_cli_int_list(opt, val, 0, 1000000, a->faces, SQ_CLI_MAX_LIST, &a->nfaces, err);
 }
 
+/* The mesh's format word: --format, else -o's extension ("" without
+ * one), else msh. */
+static const char *format_word(const sq_cli_args *a)
+{
+    const char *ext = a->output ? strrchr(a->output, '.') : NULL;
+    return a->format ? a->format : a->output ? (ext ? ext + 1 : "") : "msh";
+}
+
 /* The mesh file: -o, else <input stem>.<format> in the current directory
  * (name[n] holds it), none with --no-output; its format --format, else
  * -o's extension.  Checked before any work. */
@@ -52,10 +60,8 @@ static sq_status mesh_file(sq_cli_args *a, char *name, size_t n, sq_error *err)
         return SQ_FAIL(err, SQ_ERR_USAGE, "%s: unknown mesh format (use .msh, .xml or .vtu)",
                        a->output);
     if (a->output && !strcmp(a->output, "-") && !a->format) a->format = "msh";
-    const char *ext = a->output ? strrchr(a->output, '.') : NULL;
-    if (a->binary && !a->no_output &&
-        strcmp(a->format ? a->format : a->output ? (ext ? ext + 1 : "") : "msh", "msh"))
-        return SQ_FAIL(err, SQ_ERR_USAGE, "--binary writes MSH only: drop it, or write msh");
+    if (a->binary && !a->no_output && strcmp(format_word(a), "msh") && strcmp(format_word(a), "xml"))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "--binary writes MSH or XML only: drop it, or write msh or xml");
     if (a->no_output || a->output) return SQ_OK;
     const char *base = strrchr(a->input, '/') ? strrchr(a->input, '/') + 1 : a->input;
     const char *dot = strrchr(base, '.');
@@ -66,7 +72,11 @@ static sq_status mesh_file(sq_cli_args *a, char *name, size_t n, sq_error *err)
     return sq_output_check(name, err);
 }
 
-const char *sq_cli_mesh_format(const sq_cli_args *a) { return a->binary ? "msh-binary" : a->format; }
+const char *sq_cli_mesh_format(const sq_cli_args *a)
+{
+    if (!a->binary) return a->format;
+    return strcmp(format_word(a), "xml") ? "msh-binary" : "xml-compressed";
+}
 
 /* The outputs -o (unless a family replaces it), --svg and --report, in
  * that order (the report's timings include the writes). */
@@ -116,7 +126,8 @@ static const sq_cli_opt mesh_opts[] = {
     {.name = "format", .kind = SQ_CLI_WORD, .value = "msh|xml|vtu", .def = "-o's extension, else msh",
      .help = "the mesh's format, whatever the file's name", .target = SQ_CLI_AT(format)},
     {.name = "binary", .kind = SQ_CLI_FLAG, .set = 1, .def = "off (text)",
-     .help = "write the MSH file as binary MSH 4.1 (the same groups, nodes and elements)",
+     .help = "binary MSH 4.1 (the same groups, nodes and elements), or with xml Nektar++'s "
+             "compressed XML (COMPRESSED=\"B64Z-LittleEndian\": the same vertices, edges, quads and curves)",
      .target = SQ_CLI_AT(binary)},
     {.name = "no-output", .kind = SQ_CLI_FLAG, .set = 1, .def = "off",
      .help = "mesh and report, but write no mesh file", .target = SQ_CLI_AT(no_output)},

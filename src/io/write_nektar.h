@@ -10,7 +10,12 @@
  * nodes), COMPOSITE (C[0] = all quads, C[t+1] = the edges of boundary curve
  * t, for each curve that has edges) and DOMAIN C[0].  Nektar++ user guide,
  * "Geometry" section of the XML session file; reader: Nektar++
- * SpatialDomains/MeshGraphXml.cpp. */
+ * SpatialDomains/MeshGraphXml.cpp.  The compressed form (Nektar++
+ * SpatialDomains/MeshGraphIOXmlCompressed.cpp) holds the same entities, ids
+ * and coordinates: VERTEX, EDGE, ELEMENT's one Q and CURVED (attributes
+ * COMPRESSED="B64Z-LittleEndian" BITSIZE="64") with one base64 text each
+ * (nektar_b64z.h); CURVED's E and F, DATAPOINTS ID="0" with INDEX and
+ * POINTS; COMPOSITE and DOMAIN stay text. */
 #ifndef SQ_WRITE_NEKTAR_H
 #define SQ_WRITE_NEKTAR_H
 
@@ -23,5 +28,9 @@
  * its points in CURVED), at most about 100 events. */
 sq_status sq_write_nektar(const char *path, const sq_quad_mesh *m, const sq_progress *progress,
                           sq_error *err);
+/* The same in Nektar++'s compressed XML (Nektar++ reads it by the
+ * COMPRESSED attribute of VERTEX). */
+sq_status sq_write_nektar_compressed(const char *path, const sq_quad_mesh *m,
+                                     const sq_progress *progress, sq_error *err);
 
 #endif
