@@ -133,12 +133,11 @@ static void entities(msh_writer *w, int *bound)
     fputs(w->binary ? "\n$EndEntities\n" : "$EndEntities\n", w->fp);
 }
 
-/* The text lines of a node block: node[k]'s tag, then (k >= n) node[k -
- * n]'s coordinates. */
+/* The text lines of a node block: node[k]'s tag (node_tag_line) or its
+ * coordinates (node_xy_line). */
 typedef struct {
     const sq_quad_mesh *m;
     const int *node;
-    long n;
 } node_lines;
 
 static int node_tag_line(const void *ctx, long k, char *buf)
@@ -175,7 +174,7 @@ static sq_status node_block(msh_writer *w, int dim, int tag, const int *node, in
         return SQ_OK;
     }
     fprintf(w->fp, "%d %d 0 %d\n", dim, tag, n);
-    node_lines l = {m, node, n};
+    node_lines l = {m, node};
     SQ_TRY(sq_write_lines(w->fp, n, 24, node_tag_line, &l, w->threads, NULL, err));
     return sq_write_lines(w->fp, n, SQ_XY0_CHARS + 1, node_xy_line, &l, w->threads, &w->count,
                           err);
