@@ -78,10 +78,75 @@ static int chord_inside(const double *ring, int n, const double a[2], const doub
  * the ring's points, a patch of traced lines has thousands). */
 #define CHORD_LEVELS 3
 
-/* Patch p (one cycle, n corners) cut by a straight separatrix from a
- * corner to the midpoint of a side not at that corner (for n = 1 its only
- * side), inside the patch: the cut that parts the corners most evenly, the
- * shortest among those.  For the patches the n-quad split cannot take
+/* Bent spokes only in a patch of at most this many ring points: their
+ * triangulation's medial-axis search is quadratic in them (a patch along a
+ * face of many holes had 2e5, minutes). */
+#define ALLQUAD_BENT_RING_MAX 2000
+
+/* Length of the polyline path[np]. */
+static double path_length(const double *path, int np)
+{
+    double len = 0.0;
+    for (int i = 0; i + 1 < np; i++)
+        len += hypot(path[2 * i + 2] - path[2 * i], path[2 * i + 3] - path[2 * i + 1]);
+    return len;
+}
+
+/* The chord from corner k of patch P to the midpoint of its side j. */
+typedef struct {
+    int k, edge;
+    double frac, mid[2], len;
+    double *path; /* bent: malloc'ed polyline (np points), NULL when straight */
+    int np;
+} allquad_chord;
+
+/* The best chord of level `lev` (the corners' split |2o - (n - 1)| = lev):
+ * straight when one stays inside (the shortest), else, with `cdt`, bent
+ * along the ring's triangulation (the shortest path).  c->k < 0: none. */
+static sq_status best_chord(lay_repair *r, const sq_layout_patch *P, const double *mids,
+                            const int *medge, const double *mfrac, const double *ring, int nring,
+                            const lay_ring_cdt *cdt, int lev, allquad_chord *c, sq_error *err)
+{
+    const sq_layout *L = r->L;
+    const int n = P->ncorners;
+    const double tol = 1e3 * r->tol;
+    for (int k = 0; k < n; k++)
+        for (int sgn = -1; sgn <= 1; sgn += 2) {
+            int twice = n - 1 + sgn * lev; /* 2o: the parts have o + 2 and n - o + 1 corners */
+            if (twice % 2 || (lev == 0 && sgn > 0)) continue;
+            int o = twice / 2, j = (k + o) % n;
+            if (n > 1 && (o < 1 || o > n - 2)) continue;
+            const sq_layout_node *v = &L->nodes[P->corners[k]];
+            const double a[2] = {v->x, v->y}, *mid = &mids[2 * j];
+            sq_sep_end start;
+            if (!lay_node_end(L, P->corners[k], &start)) continue;
+            double *path = NULL, len;
+            int np = 0;
+            if (!cdt) {
+                len = hypot(mid[0] - a[0], mid[1] - a[1]);
+                if (len >= c->len || !chord_inside(ring, nring, a, mid, tol)) continue;
+            } else {
+                sq_error e;
+                sq_status st = lay_ring_cdt_path(cdt, ring, nring, a, mid, r->tol, &path, &np, &e);
+                if (st == SQ_ERR_INTERNAL) return SQ_FAIL(err, st, "%s", e.msg);
+                if (st != SQ_OK) continue;
+                len = path_length(path, np);
+                if (len >= c->len) {
+                    free(path);
+                    continue;
+                }
+            }
+            free(c->path);
+            *c = (allquad_chord){k, medge[j], mfrac[j], {mid[0], mid[1]}, len, path, np};
+        }
+    return SQ_OK;
+}
+
+/* Patch p (one cycle, n corners) cut by a separatrix from a corner to the
+ * midpoint of a side not at that corner (for n = 1 its only side): the cut
+ * that parts the corners most evenly, straight where one stays inside (the
+ * shortest), else bent along the patch's triangulation, as the n-quad
+ * split's spokes are.  For the patches the n-quad split cannot take
  * (spokes that would cross, n = 1) and those of many corners, whose centre
  * would be a vertex of high valence. */
 static sq_status split_chord(lay_repair *r, int p, sq_error *err)
@@ -89,42 +154,38 @@ static sq_status split_chord(lay_repair *r, int p, sq_error *err)
     sq_layout *L = r->L;
     const sq_layout_patch *P = &L->patches[p];
     const int n = P->ncorners;
-    int m, bk = -1, bedge = -1;
-    double *ring = lay_cycle_polygon(L, P->half, P->cycle_start[1], &m);
-    if (!ring) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    double bfrac = 0.0, bmid[2] = {0, 0}, blen = HUGE_VAL, tol = 1e3 * r->tol;
-    sq_status st = SQ_OK;
-    /* the side j = k + o: the parts have o + 2 and n - o + 1 corners, the
-     * most even at 2o = n - 1 */
-    for (int lev = 0; lev < CHORD_LEVELS && bk < 0 && st == SQ_OK; lev++)
-        for (int k = 0; k < n && st == SQ_OK; k++)
-            for (int sgn = -1; sgn <= 1; sgn += 2) {
-                int twice = n - 1 + sgn * lev; /* 2o */
-                if (twice % 2 || (lev == 0 && sgn > 0)) continue;
-                int o = twice / 2, j = (k + o) % n;
-                if (n > 1 && (o < 1 || o > n - 2)) continue;
-                int edge;
-                double frac, mid[2];
-                st = lay_side_mid(r, P, j, &edge, &frac, mid, err);
-                if (st != SQ_OK) break;
-                const sq_layout_node *c = &L->nodes[P->corners[k]];
-                double a[2] = {c->x, c->y}, len = hypot(mid[0] - a[0], mid[1] - a[1]);
-                sq_sep_end start;
-                if (len >= blen || !lay_node_end(L, P->corners[k], &start) ||
-                    !chord_inside(ring, m, a, mid, tol))
-                    continue;
-                blen = len, bk = k, bedge = edge, bfrac = frac, bmid[0] = mid[0], bmid[1] = mid[1];
-            }
-    free(ring);
-    if (st != SQ_OK) return st;
-    if (bk < 0) return SQ_FAIL(err, SQ_ERR_LAYOUT, "no straight cut from a corner stays inside");
-    const sq_layout_node *c = &L->nodes[P->corners[bk]];
-    double a[2] = {c->x, c->y};
-    sq_sep_end start;
-    lay_node_end(L, P->corners[bk], &start);
-    if (c->kind == SQ_LNODE_CORNER) L->vertex_quads[c->id]++;
-    if (c->kind == SQ_LNODE_SINGULAR) L->sing[c->id].valence++;
-    return lay_add_spoke(r, start, a, NULL, 0, bedge, bfrac, bmid, err);
+    double *mids = malloc(2 * (size_t)n * sizeof *mids), *mfrac = malloc((size_t)n * sizeof *mfrac);
+    int *medge = malloc((size_t)n * sizeof *medge), *at = malloc((size_t)n * sizeof *at), nring = 0;
+    double *ring = NULL;
+    lay_ring_cdt cdt = {0};
+    allquad_chord c = {.k = -1, .len = HUGE_VAL};
+    sq_status st = mids && mfrac && medge && at ? SQ_OK
+                                                : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int j = 0; j < n && st == SQ_OK; j++)
+        st = lay_side_point(r, P, j, 0.5, &medge[j], &mfrac[j], &mids[2 * j], err);
+    if (st == SQ_OK) st = lay_ring_with_points(L, P, mids, n, &ring, &nring, at, err);
+    for (int lev = 0; lev < CHORD_LEVELS && c.k < 0 && st == SQ_OK; lev++)
+        st = best_chord(r, P, mids, medge, mfrac, ring, nring, NULL, lev, &c, err);
+    if (st == SQ_OK && c.k < 0 && nring <= ALLQUAD_BENT_RING_MAX) {
+        sq_error e;
+        if (lay_ring_cdt_build(r, ring, nring, &cdt, &e) == SQ_OK)
+            for (int lev = 0; lev < CHORD_LEVELS && c.k < 0 && st == SQ_OK; lev++)
+                st = best_chord(r, P, mids, medge, mfrac, ring, nring, &cdt, lev, &c, err);
+    }
+    if (st == SQ_OK && c.k < 0)
+        st = SQ_FAIL(err, SQ_ERR_LAYOUT, "no cut from a corner stays inside");
+    if (st == SQ_OK) {
+        const sq_layout_node *v = &L->nodes[P->corners[c.k]];
+        double a[2] = {v->x, v->y};
+        sq_sep_end start;
+        lay_node_end(L, P->corners[c.k], &start);
+        if (v->kind == SQ_LNODE_CORNER) L->vertex_quads[v->id]++;
+        if (v->kind == SQ_LNODE_SINGULAR) L->sing[v->id].valence++;
+        st = lay_add_spoke(r, start, a, c.path, c.np, c.edge, c.frac, c.mid, err);
+    }
+    free(c.path), free(mids), free(mfrac), free(medge), free(at), free(ring);
+    lay_ring_cdt_free(&cdt);
+    return st;
 }
 
 /* The separatrices that end at an inner node of degree 1 (a singular point
@@ -156,41 +217,62 @@ static sq_status remove_dangling(lay_repair *r, sq_error *err)
     return SQ_OK;
 }
 
+/* Patch p cut across from the point at fraction t[0] of side side[0] to
+ * the point at t[1] of side side[1]: straight where the cut stays inside,
+ * else bent along the patch's triangulation. */
+static sq_status cut_across(lay_repair *r, int p, const int side[2], const double t[2],
+                            sq_error *err)
+{
+    sq_layout *L = r->L;
+    const sq_layout_patch *P = &L->patches[p];
+    int edge[2], at[2], nring = 0, np = 0;
+    double frac[2], pt[4], *ring = NULL, *path = NULL;
+    for (int k = 0; k < 2; k++)
+        SQ_TRY(lay_side_point(r, P, side[k], t[k], &edge[k], &frac[k], &pt[2 * k], err));
+    SQ_TRY(lay_ring_with_points(L, P, pt, 2, &ring, &nring, at, err));
+    sq_status st = SQ_OK;
+    if (!chord_inside(ring, nring, &pt[0], &pt[2], 1e3 * r->tol)) {
+        lay_ring_cdt cdt = {0};
+        if (nring > ALLQUAD_BENT_RING_MAX)
+            st = SQ_FAIL(err, SQ_ERR_LAYOUT, "the cut across leaves it (%d ring points)", nring);
+        if (st == SQ_OK) st = lay_ring_cdt_build(r, ring, nring, &cdt, err);
+        if (st == SQ_OK)
+            st = lay_ring_cdt_path(&cdt, ring, nring, &pt[0], &pt[2], r->tol, &path, &np, err);
+        lay_ring_cdt_free(&cdt);
+    }
+    free(ring);
+    sq_sep_end a;
+    if (st == SQ_OK) st = lay_edge_end(r, edge[0], frac[0], &pt[0], &a, err);
+    if (st == SQ_OK) st = lay_add_spoke(r, a, &pt[0], path, np, edge[1], frac[1], &pt[2], err);
+    free(path);
+    return st;
+}
+
 /* A patch of two corners (a lens) cut across between its two sides'
  * midpoints: two triangles, split next, which share the cut's midpoint.
  * (An n-quad split of a lens puts its centre on a straight line between
  * the spokes: two triangles whose splits meet at that centre.) */
-static sq_status split_across(lay_repair *r, int p, sq_error *err)
+static sq_status split_lens(lay_repair *r, int p, sq_error *err)
 {
-    sq_layout *L = r->L;
-    const sq_layout_patch *P = &L->patches[p];
-    int m, edge[2];
-    double frac[2], mid[2][2];
-    for (int k = 0; k < 2; k++) SQ_TRY(lay_side_mid(r, P, k, &edge[k], &frac[k], mid[k], err));
-    double *ring = lay_cycle_polygon(L, P->half, P->cycle_start[1], &m);
-    if (!ring) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    int inside = chord_inside(ring, m, mid[0], mid[1], 1e3 * r->tol);
-    free(ring);
-    if (!inside) return SQ_FAIL(err, SQ_ERR_LAYOUT, "the cut between its sides' midpoints leaves it");
-    sq_sep_end a, b;
-    SQ_TRY(lay_edge_end(r, edge[0], frac[0], mid[0], &a, err));
-    SQ_TRY(lay_edge_end(r, edge[1], frac[1], mid[1], &b, err));
-    return lay_straight_sep(L, a, mid[0], mid[1], b, err);
+    return cut_across(r, p, (const int[2]){0, 1}, (const double[2]){0.5, 0.5}, err);
 }
 
-/* Bent spokes only in a patch of at most this many ring points: their
- * triangulation's medial-axis search is quadratic in them (a patch along a
- * face of many holes had 2e5, minutes). */
-#define ALLQUAD_BENT_RING_MAX 2000
+/* A patch of one corner (a teardrop) whose corner no chord can leave (a
+ * crossing of separatrices) cut across its side between the thirds of its
+ * arc length: a lens and a triangle, split next. */
+static sq_status split_teardrop(lay_repair *r, int p, sq_error *err)
+{
+    return cut_across(r, p, (const int[2]){0, 0}, (const double[2]){1.0 / 3.0, 2.0 / 3.0}, err);
+}
 
 /* A patch of many corners is cut first: an n-quad split's centre of
  * valence n >= this is a vertex of high valence with thin quads. */
 #define ALLQUAD_CHORD_FIRST 7
 
-/* Patch p split once: a lens cut across, else (a crescent, whose straight
- * cut leaves it) its n-quad split with bent spokes; the n-quad split
- * (3 <= n < ALLQUAD_CHORD_FIRST) or the chord, the other one where the
- * first cannot be made. */
+/* Patch p split once: a lens cut across (bent where a straight cut leaves
+ * it), else its n-quad split; a teardrop by a chord from its corner, else
+ * cut across its side; the n-quad split (3 <= n < ALLQUAD_CHORD_FIRST) or
+ * the chord, the other one where the first cannot be made. */
 static sq_status split_once(lay_repair *r, int p, sq_error *err)
 {
     const sq_layout_patch *P = &r->L->patches[p];
@@ -200,15 +282,17 @@ static sq_status split_once(lay_repair *r, int p, sq_error *err)
     for (int h = 0; h < P->nhalf; h++) npts += r->L->edges[P->half[h].edge].npts;
     const int bent = npts <= ALLQUAD_BENT_RING_MAX;
     sq_error e1;
-    sq_status st = n == 2        ? split_across(r, p, &e1)
+    sq_status st = n == 2        ? split_lens(r, p, &e1)
                    : chord_first ? split_chord(r, p, &e1)
                                  : lay_split_centre(r, p, bent, &e1);
-    if (st == SQ_OK || st == SQ_ERR_INTERNAL || n < 2) {
+    if (st == SQ_OK || st == SQ_ERR_INTERNAL) {
         if (st != SQ_OK && err) *err = e1;
         return st;
     }
     sq_error e2;
-    st = chord_first || n == 2 ? lay_split_centre(r, p, bent, &e2) : split_chord(r, p, &e2);
+    st = n == 1                      ? split_teardrop(r, p, &e2)
+         : chord_first || n == 2 ? lay_split_centre(r, p, bent, &e2)
+                                 : split_chord(r, p, &e2);
     if (st == SQ_OK || st == SQ_ERR_INTERNAL) {
         if (st != SQ_OK && err) *err = e2;
         return st;

@@ -49,10 +49,7 @@ static int paths_cross(const double *a, int na, const double *b, int nb, double 
     return 0;
 }
 
-/* The patch's outer ring with the n side points sp[n] inserted (each on the
- * ring segment nearest it, in walking order); at[k]: the index of side
- * point k in *ring. */
-static sq_status ring_with_points(const sq_layout *L, const sq_layout_patch *P, const double *sp,
+sq_status lay_ring_with_points(const sq_layout *L, const sq_layout_patch *P, const double *sp,
                                   int n, double **ring, int *nring, int *at, sq_error *err)
 {
     int m;
@@ -280,6 +277,50 @@ static void far_point(const cad_cdt_output *o, const double *ring, int nring, co
  * the patch's ring (its own points and CGAL's splits of encroached sides) */
 #define SPLIT_CDT_POINTS_PER_RING_POINT 8
 
+sq_status lay_ring_cdt_build(const lay_repair *r, const double *ring, int nring, lay_ring_cdt *t,
+                             sq_error *err)
+{
+    int *seg = malloc(2 * (size_t)nring * sizeof *seg);
+    if (!seg) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int i = 0; i < nring; i++) seg[2 * i] = i, seg[2 * i + 1] = (i + 1) % nring;
+    cad_cdt_input in = {0};
+    in.npoints = nring, in.xy = ring, in.nsegments = nring, in.seg = seg;
+    /* spokes need a triangulation, not a fine one: CGAL's conforming
+     * splits of encroached sides multiply without end near tiny sides,
+     * so a split that needs more than a few points per ring point is
+     * given up (the trial is undone) */
+    in.max_vertices = SPLIT_CDT_POINTS_PER_RING_POINT * nring;
+    in.keep_segments = r->all_quad;
+    sq_status st = cad_cdt_mesh(&in, &t->o, err);
+    free(seg);
+    if (st == SQ_OK && !(t->nb = tri_neighbours(&t->o)))
+        st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    return st;
+}
+
+sq_status lay_ring_cdt_path(const lay_ring_cdt *t, const double *ring, int nring,
+                            const double from[2], const double to[2], double tol, double **path,
+                            int *np, sq_error *err)
+{
+    const cad_cdt_output *o = &t->o;
+    int v = 0; /* the triangulation's vertex at `to` */
+    for (int i = 1; i < o->nverts; i++)
+        if (hypot(o->xy[2 * i] - to[0], o->xy[2 * i + 1] - to[1]) <
+            hypot(o->xy[2 * v] - to[0], o->xy[2 * v + 1] - to[1]))
+            v = i;
+    SQ_TRY(cdt_path(o, t->nb, ring, nring, from, tri_holding(o, from), v, tol, path, np, err));
+    (*path)[2 * *np - 2] = to[0]; /* end exactly on the side point */
+    (*path)[2 * *np - 1] = to[1];
+    return SQ_OK;
+}
+
+void lay_ring_cdt_free(lay_ring_cdt *t)
+{
+    cad_cdt_output_free(&t->o);
+    free(t->nb);
+    t->nb = NULL;
+}
+
 /* n-quad split of patch p (one cycle, n corners; Marcon §3.4's midpoint
  * division for n = 3): a node of valence n joined to the arc-length
  * midpoints of the n sides, so that the patch becomes n quads.  The node
@@ -297,14 +338,14 @@ sq_status lay_split_centre(lay_repair *r, int p, int bent, sq_error *err)
     double *mid = malloc(2 * (size_t)n * sizeof *mid), *mfrac = malloc((size_t)n * sizeof *mfrac);
     int *medge = malloc((size_t)n * sizeof *medge), *at = malloc((size_t)n * sizeof *at);
     double **path = calloc((size_t)n, sizeof *path), *ring = NULL;
-    int *np = calloc((size_t)n, sizeof *np), *nb = NULL, nring = 0;
-    cad_cdt_output o = {0};
+    int *np = calloc((size_t)n, sizeof *np), nring = 0;
+    lay_ring_cdt t = {0};
     sq_status st = SQ_OK;
     if (!mid || !mfrac || !medge || !at || !path || !np)
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     for (int k = 0; k < n && st == SQ_OK; k++)
-        st = lay_side_mid(r, P, k, &medge[k], &mfrac[k], &mid[2 * k], err);
-    if (st == SQ_OK) st = ring_with_points(L, P, mid, n, &ring, &nring, at, err);
+        st = lay_side_point(r, P, k, 0.5, &medge[k], &mfrac[k], &mid[2 * k], err);
+    if (st == SQ_OK) st = lay_ring_with_points(L, P, mid, n, &ring, &nring, at, err);
     double cen[2] = {0, 0};
     int straight = st == SQ_OK && lay_patch_centroid(L, P, cen) &&
                    lay_poly_contains(ring, nring, cen);
@@ -312,37 +353,13 @@ sq_status lay_split_centre(lay_repair *r, int p, int bent, sq_error *err)
         straight = !seg_leaves(ring, nring, cen, &mid[2 * k], r->tol);
     if (st == SQ_OK && !straight && !bent)
         st = SQ_FAIL(err, SQ_ERR_LAYOUT, "patch %d: straight spokes would leave it", p);
+    if (st == SQ_OK && !straight) st = lay_ring_cdt_build(r, ring, nring, &t, err);
     if (st == SQ_OK && !straight) {
-        int *seg = malloc(2 * (size_t)nring * sizeof *seg);
-        if (!seg) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-        for (int i = 0; i < nring && st == SQ_OK; i++) seg[2 * i] = i, seg[2 * i + 1] = (i + 1) % nring;
-        cad_cdt_input in = {0};
-        in.npoints = nring, in.xy = ring, in.nsegments = nring, in.seg = seg;
-        /* spokes need a triangulation, not a fine one: CGAL's conforming
-         * splits of encroached sides multiply without end near tiny sides,
-         * so a split that needs more than a few points per ring point is
-         * given up (the trial is undone) */
-        in.max_vertices = SPLIT_CDT_POINTS_PER_RING_POINT * nring;
-        in.keep_segments = r->all_quad;
-        if (st == SQ_OK) st = cad_cdt_mesh(&in, &o, err);
-        free(seg);
-        if (st == SQ_OK && !(nb = tri_neighbours(&o)))
-            st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-        if (st == SQ_OK) far_point(&o, ring, nring, mid, n, r->tol, cen);
-        int t0 = st == SQ_OK ? tri_holding(&o, cen) : 0;
-        for (int k = 0; k < n && st == SQ_OK; k++) {
-            if (!seg_leaves(ring, nring, cen, &mid[2 * k], r->tol)) continue;
-            int v = 0; /* the triangulation's vertex at side point k */
-            for (int i = 1; i < o.nverts; i++)
-                if (hypot(o.xy[2 * i] - mid[2 * k], o.xy[2 * i + 1] - mid[2 * k + 1]) <
-                    hypot(o.xy[2 * v] - mid[2 * k], o.xy[2 * v + 1] - mid[2 * k + 1]))
-                    v = i;
-            st = cdt_path(&o, nb, ring, nring, cen, t0, v, r->tol, &path[k], &np[k], err);
-            if (st == SQ_OK) { /* end exactly on the side point */
-                path[k][2 * np[k] - 2] = mid[2 * k];
-                path[k][2 * np[k] - 1] = mid[2 * k + 1];
-            }
-        }
+        far_point(&t.o, ring, nring, mid, n, r->tol, cen);
+        for (int k = 0; k < n && st == SQ_OK; k++)
+            if (seg_leaves(ring, nring, cen, &mid[2 * k], r->tol))
+                st = lay_ring_cdt_path(&t, ring, nring, cen, &mid[2 * k], r->tol, &path[k], &np[k],
+                                       err);
     }
     /* spokes must not meet but at the centre */
     for (int a = 0; a < n && st == SQ_OK; a++)
@@ -365,7 +382,7 @@ sq_status lay_split_centre(lay_repair *r, int p, int bent, sq_error *err)
         if (v->kind == SQ_LNODE_CORNER && L->vertex_quads[v->id] == 0) L->vertex_quads[v->id] = 1;
     }
     for (int k = 0; path && k < n; k++) free(path[k]);
-    free(path), free(np), free(mid), free(mfrac), free(medge), free(at), free(ring), free(nb);
-    cad_cdt_output_free(&o);
+    free(path), free(np), free(mid), free(mfrac), free(medge), free(at), free(ring);
+    lay_ring_cdt_free(&t);
     return st;
 }

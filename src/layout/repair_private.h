@@ -112,8 +112,8 @@ int lay_node_end(const sq_layout *L, int v, sq_sep_end *end);
 /* ---- repair_spoke.c ---- */
 
 int lay_patch_centroid(const sq_layout *L, const sq_layout_patch *P, double cen[2]);
-sq_status lay_side_mid(lay_repair *r, const sq_layout_patch *P, int k, int *edge, double *frac,
-                       double xy[2], sq_error *err);
+sq_status lay_side_point(lay_repair *r, const sq_layout_patch *P, int k, double t, int *edge,
+                         double *frac, double xy[2], sq_error *err);
 sq_status lay_straight_sep(sq_layout *L, sq_sep_end start, const double a[2], const double b[2],
                            sq_sep_end end, sq_error *err);
 sq_status lay_edge_end(lay_repair *r, int edge, double frac, const double p[2], sq_sep_end *end,
@@ -122,6 +122,28 @@ sq_status lay_add_spoke(lay_repair *r, sq_sep_end start, const double cen[2], co
                         int np, int edge, double frac, const double p[2], sq_error *err);
 
 /* ---- repair_nsplit.c ---- */
+
+/* The patch's outer ring with the n side points sp[n] inserted (each on the
+ * ring segment nearest it, in walking order); at[k]: the index of side
+ * point k in *ring (malloc'ed, *nring points). */
+sq_status lay_ring_with_points(const sq_layout *L, const sq_layout_patch *P, const double *sp,
+                               int n, double **ring, int *nring, int *at, sq_error *err);
+
+/* A patch ring's constrained Delaunay triangulation, along which spokes and
+ * chords bend where straight ones would leave the patch. */
+typedef struct {
+    cad_cdt_output o;
+    int *nb; /* nb[3t + j]: the triangle across edge j of triangle t, -1 on the rim */
+} lay_ring_cdt;
+sq_status lay_ring_cdt_build(const lay_repair *r, const double *ring, int nring, lay_ring_cdt *t,
+                             sq_error *err);
+/* A path inside the ring from `from` to the ring point `to` through the
+ * triangles, shortened where straight pieces stay inside; *path malloc'ed
+ * (*np points, from first, to last). */
+sq_status lay_ring_cdt_path(const lay_ring_cdt *t, const double *ring, int nring,
+                            const double from[2], const double to[2], double tol, double **path,
+                            int *np, sq_error *err);
+void lay_ring_cdt_free(lay_ring_cdt *t);
 
 /* The n-quad split of patch p; spokes may bend only if `bent`. */
 sq_status lay_split_centre(lay_repair *r, int p, int bent, sq_error *err);

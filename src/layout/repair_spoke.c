@@ -7,10 +7,10 @@
 #include <math.h>
 #include <stdlib.h>
 
-/* Arc-length midpoint of the half-edges half[a..b) of patch P: the edge and
- * the fraction along it (from its n0). */
-static void chain_mid(const sq_layout *L, const sq_layout_patch *P, int a, int b, int *edge,
-                      double *frac)
+/* The point at fraction t of the arc length of the half-edges half[a..b)
+ * of patch P: the edge and the fraction along it (from its n0). */
+static void chain_point(const sq_layout *L, const sq_layout_patch *P, int a, int b, double t,
+                        int *edge, double *frac)
 {
     double tot = 0.0;
     for (int k = a; k < b; k++) tot += L->edges[P->half[k % P->nhalf].edge].length;
@@ -18,8 +18,8 @@ static void chain_mid(const sq_layout *L, const sq_layout_patch *P, int a, int b
     for (int k = a; k < b; k++) {
         const sq_layout_half *h = &P->half[k % P->nhalf];
         double l = L->edges[h->edge].length;
-        if (acc + l >= 0.5 * tot || k == b - 1) {
-            double f = l > 0 ? (0.5 * tot - acc) / l : 0.5;
+        if (acc + l >= t * tot || k == b - 1) {
+            double f = l > 0 ? (t * tot - acc) / l : 0.5;
             *edge = h->edge;
             *frac = h->reversed ? 1.0 - f : f;
             return;
@@ -52,14 +52,15 @@ int lay_patch_centroid(const sq_layout *L, const sq_layout_patch *P, double cen[
     return 1;
 }
 
-/* Arc-length midpoint of side k of patch P (corner k to corner k+1): the
+/* The point at fraction t of the arc length of side k of patch P (corner k
+ * to corner k + 1; t = 0.5 its midpoint): the
  * edge, the fraction along it and the point. */
-sq_status lay_side_mid(lay_repair *r, const sq_layout_patch *P, int k, int *edge, double *frac,
-                       double xy[2], sq_error *err)
+sq_status lay_side_point(lay_repair *r, const sq_layout_patch *P, int k, double t, int *edge,
+                         double *frac, double xy[2], sq_error *err)
 {
     int a = P->corner_half[k], b = P->corner_half[(k + 1) % P->ncorners];
     if (b <= a) b += P->nhalf;
-    chain_mid(r->L, P, a, b, edge, frac);
+    chain_point(r->L, P, a, b, t, edge, frac);
     return sq_layout_edge_point(r->L, r->face, *edge, *frac, xy, err);
 }
 

@@ -74,7 +74,7 @@ sq_status lay_split_valence2(lay_repair *r, int *done, sq_error *err)
         int medge[2];
         double mfrac[2];
         for (int j = 0; j < 2; j++)
-            SQ_TRY(lay_side_mid(r, P, (side + 1 + j) % 3, &medge[j], &mfrac[j], mid[j], err));
+            SQ_TRY(lay_side_point(r, P, (side + 1 + j) % 3, 0.5, &medge[j], &mfrac[j], mid[j], err));
         if (!lay_patch_centroid(L, P, cen)) {
             cen[0] = (vxy[0] + mid[0][0] + mid[1][0]) / 3.0;
             cen[1] = (vxy[1] + mid[0][1] + mid[1][1]) / 3.0;
