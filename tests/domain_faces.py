@@ -31,6 +31,18 @@ import sys
 import gmsh
 
 
+def ring_sector(occ, angle):
+    """The face 0.5 <= r <= 1, 0 <= polar angle <= angle (its tag)."""
+    p = [occ.addPoint(r * math.cos(a), r * math.sin(a), 0)
+         for r, a in ((0.5, 0), (1, 0), (1, angle), (0.5, angle))]
+    c = occ.addPoint(0, 0, 0)
+    lines = [occ.addLine(p[0], p[1]), occ.addCircleArc(p[1], c, p[2]),
+             occ.addLine(p[2], p[3]), occ.addCircleArc(p[3], c, p[0])]
+    s = occ.addPlaneSurface([occ.addCurveLoop(lines)])
+    occ.remove([(0, c)])
+    return s
+
+
 def build(name):
     occ = gmsh.model.occ
     if name == "circle_square":
@@ -49,13 +61,7 @@ def build(name):
         occ.fragment([(2, a)], [(2, b)])
         return [4 - math.pi * 0.6 * 0.35, math.pi * 0.6 * 0.35]
     if name == "sector":
-        p = [occ.addPoint(r * math.cos(a), r * math.sin(a), 0)
-             for r, a in ((0.5, 0), (1, 0), (1, math.pi / 4), (0.5, math.pi / 4))]
-        c = occ.addPoint(0, 0, 0)
-        lines = [occ.addLine(p[0], p[1]), occ.addCircleArc(p[1], c, p[2]),
-                 occ.addLine(p[2], p[3]), occ.addCircleArc(p[3], c, p[0])]
-        occ.addPlaneSurface([occ.addCurveLoop(lines)])
-        occ.remove([(0, c)])
+        ring_sector(occ, math.pi / 4)
         return [math.pi / 8 * (1 - 0.25)]
     if name == "channel":
         a = occ.addRectangle(0, 0, 0, 3, 1)
@@ -68,13 +74,7 @@ def build(name):
         occ.cut([(2, a)], [(2, b)])
         return [3 - math.pi * 0.04]
     if name == "sector_hole":
-        p = [occ.addPoint(r * math.cos(a), r * math.sin(a), 0)
-             for r, a in ((0.5, 0), (1, 0), (1, math.pi / 2), (0.5, math.pi / 2))]
-        c = occ.addPoint(0, 0, 0)
-        lines = [occ.addLine(p[0], p[1]), occ.addCircleArc(p[1], c, p[2]),
-                 occ.addLine(p[2], p[3]), occ.addCircleArc(p[3], c, p[0])]
-        s = occ.addPlaneSurface([occ.addCurveLoop(lines)])
-        occ.remove([(0, c)])
+        s = ring_sector(occ, math.pi / 2)
         occ.cut([(2, s)], [(2, occ.addDisk(0.62, 0.3, 0, 0.1, 0.1))])
         return [math.pi / 4 * (1 - 0.25) - math.pi * 0.01]
     raise SystemExit("unknown domain " + name)

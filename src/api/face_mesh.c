@@ -277,14 +277,18 @@ static sq_status periodic_route_1b(sq_mesh *h, const sq_layout_options *lo,
     sq_api_log(o, SQ_LOG_NOTE, "periodic: the layout road failed (%s); trying the face's own "
                "layout with the image curves' vertices slid onto their masters' images", first);
     sq_status st = slid_layout_road(h, lo, mo, o, err);
+    char all_quad[sizeof h->road.reason]; /* the last resort's reason, if it was taken */
+    snprintf(all_quad, sizeof all_quad, "%s", h->road.reason);
     if (st == SQ_OK)
         snprintf(h->road.reason, sizeof h->road.reason,
                  "periodic route 1b: the face's own layout, each pair's image vertices slid onto "
-                 "the images of its master's (the identified domain's layout: %.300s)", first);
+                 "the images of its master's (the identified domain's layout, route 1: "
+                 "%.200s)%s%.150s",
+                 first, all_quad[0] ? "; " : "", all_quad);
     else
         snprintf(h->road.reason, sizeof h->road.reason,
-                 "periodic: the identified domain's layout: %.300s; the face's own layout with "
-                 "slid vertices: %.300s", first, err->msg);
+                 "periodic: the face's own layout with slid vertices (route 1b): %.220s; the "
+                 "identified domain's layout (route 1): %.180s", err->msg, first);
     return st;
 }
 

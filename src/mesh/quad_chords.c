@@ -260,7 +260,8 @@ static sq_status equal_totals(const sq_layout *L, const double *len, double size
             st = SQ_FAIL(err, SQ_ERR_LAYOUT,
                          "periodic edges %d and %d: %ld and %ld segments, and every sheet of the "
                          "layout from edge %d ends on edge %d or another pair's longer curve too: "
-                         "no quantization gives them one total", p->a, p->b, na, nb, na < nb ? p->a : p->b, na < nb ? p->b : p->a);
+                         "no raise evens them",
+                         p->a, p->b, na, nb, na < nb ? p->a : p->b, na < nb ? p->b : p->a);
         }
         if (st == SQ_OK) {
             n[best]++;
