@@ -15,12 +15,32 @@ kernel (python3-gmsh) and fragmented so that faces share their edges:
   channel        one face: the channel [0,3]x[0,1] with a round hole (centre
                  (1.2, 0.5), radius 0.25), its walls y = 0 and y = 1
                  periodic under the translation by (0, 1).
+  channel_offset the channel with its hole off the centre line (centre
+                 (1.2, 0.3), radius 0.2): the layout of its identified
+                 domain fails, the face's own layout with slid vertices
+                 (route 1b) meshes it;
+  sector_hole    one face: the quarter ring 0.5 <= r <= 1, 0 <= angle <=
+                 90 deg, less the disc of radius 0.1 about (0.62, 0.3): its
+                 radial sides periodic under the rotation by 90 deg, their
+                 layout crossings not images of each other (route 1b).
 
 usage: domain_faces.py NAME OUT.step; prints the exact face areas, one a line."""
 import math
 import sys
 
 import gmsh
+
+
+def ring_sector(occ, angle):
+    """The face 0.5 <= r <= 1, 0 <= polar angle <= angle (its tag)."""
+    p = [occ.addPoint(r * math.cos(a), r * math.sin(a), 0)
+         for r, a in ((0.5, 0), (1, 0), (1, angle), (0.5, angle))]
+    c = occ.addPoint(0, 0, 0)
+    lines = [occ.addLine(p[0], p[1]), occ.addCircleArc(p[1], c, p[2]),
+             occ.addLine(p[2], p[3]), occ.addCircleArc(p[3], c, p[0])]
+    s = occ.addPlaneSurface([occ.addCurveLoop(lines)])
+    occ.remove([(0, c)])
+    return s
 
 
 def build(name):
@@ -41,19 +61,22 @@ def build(name):
         occ.fragment([(2, a)], [(2, b)])
         return [4 - math.pi * 0.6 * 0.35, math.pi * 0.6 * 0.35]
     if name == "sector":
-        p = [occ.addPoint(r * math.cos(a), r * math.sin(a), 0)
-             for r, a in ((0.5, 0), (1, 0), (1, math.pi / 4), (0.5, math.pi / 4))]
-        c = occ.addPoint(0, 0, 0)
-        lines = [occ.addLine(p[0], p[1]), occ.addCircleArc(p[1], c, p[2]),
-                 occ.addLine(p[2], p[3]), occ.addCircleArc(p[3], c, p[0])]
-        occ.addPlaneSurface([occ.addCurveLoop(lines)])
-        occ.remove([(0, c)])
+        ring_sector(occ, math.pi / 4)
         return [math.pi / 8 * (1 - 0.25)]
     if name == "channel":
         a = occ.addRectangle(0, 0, 0, 3, 1)
         b = occ.addDisk(1.2, 0.5, 0, 0.25, 0.25)
         occ.cut([(2, a)], [(2, b)])
         return [3 - math.pi * 0.0625]
+    if name == "channel_offset":
+        a = occ.addRectangle(0, 0, 0, 3, 1)
+        b = occ.addDisk(1.2, 0.3, 0, 0.2, 0.2)
+        occ.cut([(2, a)], [(2, b)])
+        return [3 - math.pi * 0.04]
+    if name == "sector_hole":
+        s = ring_sector(occ, math.pi / 2)
+        occ.cut([(2, s)], [(2, occ.addDisk(0.62, 0.3, 0, 0.1, 0.1))])
+        return [math.pi / 4 * (1 - 0.25) - math.pi * 0.01]
     raise SystemExit("unknown domain " + name)
 
 

@@ -1,7 +1,7 @@
 #!/usr/bin/python3
 """t629: periodic boundaries (`semquad mesh --periodic`, docs/domains.md).
 
-Three faces built here: the project's own T106-like cascade passage
+Faces built here: the project's own T106-like cascade passage
 (tests/cascade_aerofoil.py: periodic lines of four segments one pitch,
 0.8, apart), 1/8 of the ring 0.5 <= r <= 1 (tests/domain_faces.py
 sector: its radial sides periodic under the rotation by 45 deg about the
@@ -37,6 +37,11 @@ $SEMQUAD_REAL_GEOMETRIES, NekMesh's real T106 file too (pitch 0.798).  Each mesh
     layout road of its identified domain (field glued across the walls,
     separatrices re-entering, one chord count for a piece and its image)
     with exactly Gauss-Bonnet's 4 irregular vertices;
+  - route 1b (domain_faces.py channel_offset, the channel with its hole
+    off the centre line, and sector_hole, a quarter ring less a disc,
+    periodic under the quarter turn): the face's own layout with one chord
+    total per curve and the image's vertices slid onto the master's
+    images, on the layout road with exactly Gauss-Bonnet's 4;
   - Nektar++ XML: one composite per periodic side, both with as many edges;
   - `--periodic 0:1` on the cascade (lengths 1.67 and 0.4) exits 9 with
     one line on stderr and writes nothing.
@@ -145,6 +150,9 @@ def check(name, step, expect, tmp):
         fails.append("%s: road %s, %d irregular (Gauss-Bonnet: %d)" % (
             name, report["road"], per["irregular_interior_vertices"],
             abs(per["gauss_bonnet_index"])))
+    if expect.get("route_1b") and "periodic route 1b" not in report.get("road_reason", ""):
+        fails.append("%s: not by route 1b (the face's own layout, vertices slid): %s" % (
+            name, report.get("road_reason", "")))
     r = subprocess.run([SQ, "mesh", step, "--periodic", "auto", "--order", "6", "-o", xml, "-q"],
                        capture_output=True, text=True)
     comp = dict(re.findall(r'NAME="(periodic_0_\w+)"> E\[([^\]]*)\]', open(xml).read())
@@ -198,6 +206,17 @@ def main():
         check("channel", channel, {"pairs": {(0, 2)}, "kind": "translation",
                                    "transform": translation(0, 1), "chi": -1, "index": -4,
                                    "layout": 1}, tmp)
+        # route 1b: the layout of the identified domain fails (the channel
+        # with its hole off the centre line) or is not made (a rotation);
+        # the face's own layout, one chord total per curve, the image's
+        # vertices slid: exactly Gauss-Bonnet's 4 irregular vertices (a
+        # glued pair of boundary nodes has 2 + 2 quads: regular)
+        for face, kind, transform in (("channel_offset", "translation", translation(0, 1)),
+                                      ("sector_hole", "rotation", rotation(90))):
+            step = os.path.join(tmp, face + ".step")
+            subprocess.run([sys.executable, GEN, face, step], check=True, capture_output=True)
+            check(face, step, {"pairs": {(0, 2)}, "kind": kind, "transform": transform,
+                               "chi": -1, "index": -4, "layout": 1, "route_1b": 1}, tmp)
         square = os.path.join(os.environ.get("SQ_EXAMPLES", "examples"), "square.step")
         check("square", square, {"pairs": {(0, 2), (1, 3)}, "kind": "translation",
                                  "transform": lambda a: translation(0, 1)(a) or

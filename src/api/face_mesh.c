@@ -107,21 +107,20 @@ typedef struct {
     const cad_face *face;
     const sq_layout_result *r;
     const sq_periodic *per; /* NULL: none */
+    double tol;             /* of the link, relative to the size */
 } layout_ctx;
 
 /* With periodic pairs the layout's mesh is kept only where its nodes on
  * each pair agree (periodic.h design 2): SQ_ERR_LAYOUT sends the face to
- * the split road. */
+ * the next route. */
 static sq_status mesh_by_layout(void *ctx, const sq_mesher_options *mo, sq_quad_mesh **m,
                                 sq_error *err)
 {
     const layout_ctx *c = ctx;
     SQ_TRY(sq_mesh_layout(c->face, c->r->info, &c->r->layout, mo, m, err));
     if (!c->per) return SQ_OK;
-    const double tol =
-        c->per->nidentified ? SQ_IDENTIFIED_CROSSING_REL_TOL : SQ_PERIODIC_NODE_REL_TOL;
     sq_status st =
-        sq_periodic_link(c->per, *m, sq_mesher_size(mo, c->r->layout.face_area), tol, err);
+        sq_periodic_link(c->per, *m, sq_mesher_size(mo, c->r->layout.face_area), c->tol, err);
     if (st != SQ_OK) sq_quad_mesh_free(m);
     return st;
 }
@@ -206,7 +205,11 @@ static sq_status layout_road(sq_mesh *h, const sq_layout_options *lo, sq_mesher_
         cf = sq_htheta_cross_field(&r->htheta);
         mo->field = &cf;
     }
-    layout_ctx c = {h->face.cad, r, h->per.npairs ? &h->per : NULL};
+    /* a layout of the identified domain puts a crossing and its image
+     * within a quarter of the size; the others, the image's nodes set */
+    const double tol = h->per.nidentified && !mo->slid.npairs ? SQ_IDENTIFIED_CROSSING_REL_TOL
+                                                              : SQ_PERIODIC_NODE_REL_TOL;
+    layout_ctx c = {h->face.cad, r, h->per.npairs ? &h->per : NULL, tol};
     st = mesh_halving(mesh_by_layout, &c, *mo, sq_mesher_default_size(r->layout.face_area), o, h,
                       err);
     mo->field = NULL;
@@ -233,6 +236,59 @@ static sq_status split_road(sq_mesh *h, const sq_mesher_options *mo, const sq_op
         st = SQ_FAIL(err, st, "%s (the split road; the layout road: %s)", split_msg,
                      h->road.reason);
     }
+    return st;
+}
+
+/* Route 1b of periodic pairs (docs/domains.md): the face's own layout,
+ * no edge identified, each pair's curves given one chord total and the
+ * image's vertices set to the images of the master's (sq_mesher_options
+ * .slid), for translations and rotations alike. */
+static sq_status slid_layout_road(sq_mesh *h, const sq_layout_options *lo,
+                                  const sq_mesher_options *mo, const sq_options *o, sq_error *err)
+{
+    const sq_periodic *per = &h->per;
+    sq_identified_pair *pairs = malloc(sizeof *pairs * (size_t)per->npairs);
+    if (!pairs) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < per->npairs; k++) {
+        pairs[k].a = per->pairs[k].a, pairs[k].b = per->pairs[k].b;
+        memcpy(pairs[k].affine, per->pairs[k].affine, sizeof pairs[k].affine);
+    }
+    sq_layout_options own = *lo;
+    own.field.periodic = own.trace.periodic = (sq_identification){0, NULL};
+    sq_mesher_options so = *mo;
+    so.periodic = (sq_identification){0, NULL};
+    so.slid = (sq_identification){per->npairs, pairs};
+    sq_layout_result_free(&h->r);
+    sq_quad_mesh_free(&h->q);
+    h->all_quad = 0;
+    h->road.reason[0] = '\0';
+    sq_status st = layout_road(h, &own, &so, o, err);
+    free(pairs);
+    return st;
+}
+
+/* Periodic pairs whose layout (route 1) failed: route 1b, its reason in
+ * road.reason whether it meshes or not. */
+static sq_status periodic_route_1b(sq_mesh *h, const sq_layout_options *lo,
+                                   sq_mesher_options *mo, const sq_options *o, sq_error *err)
+{
+    char first[sizeof err->msg];
+    snprintf(first, sizeof first, "%s", err->msg);
+    sq_api_log(o, SQ_LOG_NOTE, "periodic: the layout road failed (%s); trying the face's own "
+               "layout with the image curves' vertices slid onto their masters' images", first);
+    sq_status st = slid_layout_road(h, lo, mo, o, err);
+    char all_quad[sizeof h->road.reason]; /* the last resort's reason, if it was taken */
+    snprintf(all_quad, sizeof all_quad, "%s", h->road.reason);
+    if (st == SQ_OK)
+        snprintf(h->road.reason, sizeof h->road.reason,
+                 "periodic route 1b: the face's own layout, each pair's image vertices slid onto "
+                 "the images of its master's (the identified domain's layout, route 1: "
+                 "%.200s)%s%.150s",
+                 first, all_quad[0] ? "; " : "", all_quad);
+    else
+        snprintf(h->road.reason, sizeof h->road.reason,
+                 "periodic: the face's own layout with slid vertices (route 1b): %.220s; the "
+                 "identified domain's layout (route 1): %.180s", err->msg, first);
     return st;
 }
 
@@ -354,8 +410,10 @@ static sq_status run_roads(sq_mesh *h, sq_api_road road, const sq_layout_options
     h->road.name = road == SQ_API_ROAD_SPLIT ? "split" : "layout";
     sq_status st = SQ_OK;
     if (road != SQ_API_ROAD_SPLIT) st = layout_road(h, lo, mo, o, err);
+    if (road != SQ_API_ROAD_SPLIT && h->per.npairs && takes_split_road(st, lo, mo))
+        st = periodic_route_1b(h, lo, mo, o, err);
     if (road == SQ_API_ROAD_AUTO && takes_split_road(st, lo, mo)) {
-        snprintf(h->road.reason, sizeof h->road.reason, "%s", err->msg);
+        if (!h->per.npairs) snprintf(h->road.reason, sizeof h->road.reason, "%s", err->msg);
         sq_api_log(o, SQ_LOG_NOTE, "the layout road failed (%s); meshing by the split road",
                    err->msg);
         h->road.name = "split";

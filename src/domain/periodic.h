@@ -19,8 +19,10 @@
  *     pairs are translations (sq_periodic.identified: the field glued across
  *     them, separatrices re-entering, a piece and its image one chord
  *     count; src/field/identified_edges.h), kept where its nodes on the
- *     pairs correspond; else the face as a domain of one face whose
- *     interfaces are the pairs (sq_periodic_domain: the split road's
+ *     pairs correspond; else the face's own layout with one chord total
+ *     per curve of a pair and the image's vertices slid onto the master's
+ *     images (route 1b, sq_mesher_options.slid); else the face as a
+ *     domain of one face whose interfaces are the pairs (sq_periodic_domain: the split road's
  *     exchange of vertices, domain.h design 2, maps b's arc lengths to
  *     a's); either way the nodes of b are then set to the images of a's
  *     (sq_periodic_link), so they coincide to one rounding of T;

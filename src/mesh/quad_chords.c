@@ -5,6 +5,7 @@
 
 #include <math.h>
 #include <stdlib.h>
+#include <string.h>
 
 #define MAX_SEGMENTS 1000000 /* per edge: quantization that runs away is a bug */
 
@@ -154,12 +155,11 @@ void qm_periodic_partners(const sq_layout *L, const cad_face *face, const sq_mes
     }
 }
 
-/* Design 1: chord quantization. */
-sq_status qm_quantize(const sq_layout *L, const double *len, double size, const int *grade,
-                      const double *need, const int *partner, const sq_mesher_options *o, int *n,
-                      sq_error *err)
+/* Opposite sides of every patch matched (and a piece and its partner one
+ * count): each short side's coarsest edge raised until nothing changes. */
+static sq_status settle(const sq_layout *L, const double *len, double size, const double *need,
+                        const int *partner, int *n, sq_error *err)
 {
-    for (int e = 0; e < L->nedges; e++) n[e] = edge_segments(len[e], size, grade[e], o);
     for (int changed = 1; changed;) {
         changed = 0;
         /* a piece of an identified edge and its image: one count, the larger */
@@ -197,4 +197,87 @@ sq_status qm_quantize(const sq_layout *L, const double *len, double size, const 
         }
     }
     return SQ_OK;
+}
+
+/* Segments on CAD edge t: the sum over its layout edges. */
+static long cad_edge_count(const sq_layout *L, int t, const int *n)
+{
+    long c = 0;
+    for (int e = 0; e < L->nedges; e++)
+        if (L->edges[e].cad_edge == t) c += n[e];
+    return c;
+}
+
+/* The pairs' imbalance: the sum over pairs of |total on a - total on b|. */
+static long slid_imbalance(const sq_layout *L, const sq_identification *id, const int *n)
+{
+    long d = 0;
+    for (int k = 0; k < id->npairs; k++)
+        d += labs(cad_edge_count(L, id->pairs[k].a, n) - cad_edge_count(L, id->pairs[k].b, n));
+    return d;
+}
+
+/* Route 1b (docs/domains.md, "one total per curve"): the two curves of
+ * every pair of o->slid carry one total count.  The face's own layout has
+ * no partner pieces, so only totals are matched: an integer problem,
+ * solved greedily and deterministically.  While some pair differs, every
+ * layout edge on the shorter curve of such a pair is tried raised by one
+ * and the quantization settled again (the raise runs along its sheet to
+ * wherever the sheet ends); a try is admissible when the pairs' total
+ * imbalance falls (its sheet does not end on the longer curve as well),
+ * and the one adding the fewest quads (the least change of size) is
+ * kept, the lowest edge index at a tie.  None admissible: SQ_ERR_LAYOUT
+ * (every sheet from the short curve ends on its partner too). */
+static sq_status equal_totals(const sq_layout *L, const double *len, double size,
+                              const double *need, const sq_identification *id, int *n,
+                              sq_error *err)
+{
+    int *trial = malloc(sizeof(int) * ((size_t)L->nedges + 1));
+    if (!trial) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    sq_status st = SQ_OK;
+    for (long d = slid_imbalance(L, id, n); d > 0 && st == SQ_OK; d = slid_imbalance(L, id, n)) {
+        int best = -1, short_pair = -1;
+        double best_quads = HUGE_VAL, quads = qm_quantized_quads(L, n);
+        for (int k = 0; k < id->npairs && st == SQ_OK; k++) {
+            const int a = id->pairs[k].a, b = id->pairs[k].b;
+            const long na = cad_edge_count(L, a, n), nb = cad_edge_count(L, b, n);
+            if (na == nb) continue;
+            if (short_pair < 0) short_pair = k;
+            const int shorter = na < nb ? a : b;
+            for (int e = 0; e < L->nedges && st == SQ_OK; e++) {
+                if (L->edges[e].cad_edge != shorter) continue;
+                memcpy(trial, n, sizeof(int) * (size_t)L->nedges);
+                trial[e]++;
+                st = settle(L, len, size, need, NULL, trial, err);
+                double added = st == SQ_OK ? qm_quantized_quads(L, trial) - quads : 0.0;
+                if (st == SQ_OK && slid_imbalance(L, id, trial) < d && added < best_quads)
+                    best_quads = added, best = e;
+            }
+        }
+        if (st == SQ_OK && best < 0) {
+            const sq_identified_pair *p = &id->pairs[short_pair];
+            const long na = cad_edge_count(L, p->a, n), nb = cad_edge_count(L, p->b, n);
+            st = SQ_FAIL(err, SQ_ERR_LAYOUT,
+                         "periodic edges %d and %d: %ld and %ld segments, and every sheet of the "
+                         "layout from edge %d ends on edge %d or another pair's longer curve too: "
+                         "no raise evens them",
+                         p->a, p->b, na, nb, na < nb ? p->a : p->b, na < nb ? p->b : p->a);
+        }
+        if (st == SQ_OK) {
+            n[best]++;
+            st = settle(L, len, size, need, NULL, n, err);
+        }
+    }
+    free(trial);
+    return st;
+}
+
+/* Design 1: chord quantization. */
+sq_status qm_quantize(const sq_layout *L, const double *len, double size, const int *grade,
+                      const double *need, const int *partner, const sq_mesher_options *o, int *n,
+                      sq_error *err)
+{
+    for (int e = 0; e < L->nedges; e++) n[e] = edge_segments(len[e], size, grade[e], o);
+    SQ_TRY(settle(L, len, size, need, partner, n, err));
+    return o->slid.npairs ? equal_totals(L, len, size, need, &o->slid, n, err) : SQ_OK;
 }

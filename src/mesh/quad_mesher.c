@@ -219,6 +219,7 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
     free(need);
     qm_vmesh v = {0};
     if (st == SQ_OK) st = qm_assemble(L, face, opt, nseg, grade, cum, &v, err);
+    if (st == SQ_OK && opt->slid.npairs) st = qm_slide_periodic(face, opt, &v, err);
     if (st == SQ_OK) st = finish(face, info, &v, opt, out, err);
     qm_vmesh_free(&v);
     if (st == SQ_OK) st = refine_levels(face, levels, opt, out, err);

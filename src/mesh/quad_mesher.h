@@ -80,6 +80,12 @@ typedef struct {
      * layout road gives a boundary piece on a and its image on b the same
      * chords */
     sq_identification periodic;
+    /* periodic pairs on the face's own layout (route 1b, docs/domains.md;
+     * none: npairs 0): the two curves of a pair get one total chord count
+     * (their pieces need not correspond), and after the patches the
+     * vertices on b are set to the images of a's in order, b's layout
+     * corners sliding along b, then held there by the relaxation */
+    sq_identification slid;
 } sq_mesher_options;
 
 /* 2e7 quads of order 4 take about 10 GB (25 nodes of 16 bytes each, the

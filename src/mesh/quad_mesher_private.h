@@ -52,7 +52,9 @@ double qm_measure_fraction(const double *cum, double u);
 /* Segments per edge n[e], opposite sides of every patch matched; with
  * need (NULL: none), no fewer on sides k and k + 2 of patch q than
  * round(need[2 q + k] / size). */
-/* partner (NULL: none): layout edges whose counts are one (qm_periodic_partners). */
+/* partner (NULL: none): layout edges whose counts are one (qm_periodic_partners);
+ * o->slid: each pair's two curves one total (SQ_ERR_LAYOUT where the
+ * layout's sheets cannot give it). */
 sq_status qm_quantize(const sq_layout *L, const double *len, double size, const int *grade,
                       const double *need, const int *partner, const sq_mesher_options *o, int *n,
                       sq_error *err);
@@ -119,6 +121,15 @@ sq_status qm_assemble(const sq_layout *L, const cad_face *face, const sq_mesher_
                       const int *nseg, const int *grade, const double *cum, qm_vmesh *v,
                       sq_error *err);
 void qm_vmesh_free(qm_vmesh *v);
+
+/* ---- quad_slide.c: route 1b of periodic pairs ---- */
+
+/* The vertices of each pair of opt->slid on b set to the images of a's,
+ * one to one in order of arc length (b at L - s the image of a at s): b's
+ * layout corners slide along b.  The quantization gave both one total
+ * (SQ_ERR_INTERNAL otherwise). */
+sq_status qm_slide_periodic(const cad_face *face, const sq_mesher_options *opt, qm_vmesh *v,
+                            sq_error *err);
 
 /* ---- quad_untangle.c ---- */
 
