@@ -10,6 +10,13 @@ void sq_json_init(sq_json *j, FILE *fp)
     j->after_key = 0;
 }
 
+void sq_json_init_in_object(sq_json *j, FILE *fp)
+{
+    sq_json_init(j, fp);
+    j->depth = 1;
+    j->count[1] = 1;
+}
+
 /* Separator and indentation before a value or key at the current level. */
 static void item(sq_json *j)
 {

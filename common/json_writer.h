@@ -14,6 +14,9 @@ typedef struct {
 } sq_json;
 
 void sq_json_init(sq_json *j, FILE *fp);
+/* A writer adding keys to a top-level object already open on fp with
+ * items in it (a report printed by hand): its first key after a comma. */
+void sq_json_init_in_object(sq_json *j, FILE *fp);
 void sq_json_begin_object(sq_json *j);
 void sq_json_end_object(sq_json *j);
 void sq_json_begin_array(sq_json *j);

@@ -207,10 +207,11 @@ typedef struct {
     const sq_size_source *sizes;
     int nnames;         /* boundary names names[nnames] (0: generic boundary_N) */
     const sq_boundary_name *names;
-    /* Periodic boundaries of one face (docs/domains.md): NULL, none;
-     * "auto", the pairs of edges that match under a translation or a
+    /* Periodic boundaries of a face or of several (docs/domains.md): NULL,
+     * none; "auto", the pairs of edges that match under a translation or a
      * rotation; "A:B[,C:D...]", those edges (SQ_ERR_PERIODIC if they do not
-     * match). The mesh's nodes on B are the images of A's. */
+     * match; of several faces, the domain's boundary curve numbers). The
+     * mesh's nodes on B are the images of A's. */
     const char *periodic;
     double size_gradation; /* bound g > 1 of neighbours' size ratio (default 1.3) */
     /* Curvature sizes (docs/sizes.md): N elements per radian of the CAD

@@ -14,7 +14,7 @@ kernel (python3-gmsh) and fragmented so that faces share their edges:
                  rotation by 45 deg, docs/domains.md);
   channel        one face: the channel [0,3]x[0,1] with a round hole (centre
                  (1.2, 0.5), radius 0.25), its walls y = 0 and y = 1
-                 periodic under the translation by (0, 1).
+                 periodic under the translation by (0, 1);
   channel_offset the channel with its hole off the centre line (centre
                  (1.2, 0.3), radius 0.2): the layout of its identified
                  domain fails, the face's own layout with slid vertices
@@ -22,7 +22,11 @@ kernel (python3-gmsh) and fragmented so that faces share their edges:
   sector_hole    one face: the quarter ring 0.5 <= r <= 1, 0 <= angle <=
                  90 deg, less the disc of radius 0.1 about (0.62, 0.3): its
                  radial sides periodic under the rotation by 90 deg, their
-                 layout crossings not images of each other (route 1b).
+                 layout crossings not images of each other (route 1b);
+  ring4          the sector's ring cut by the arc r = 0.75 and the ray at
+                 22.5 deg into four faces sharing four edges; its two
+                 radial sides (two edges each) periodic under the rotation
+                 by 45 deg.
 
 usage: domain_faces.py NAME OUT.step; prints the exact face areas, one a line."""
 import math
@@ -63,6 +67,20 @@ def build(name):
     if name == "sector":
         ring_sector(occ, math.pi / 4)
         return [math.pi / 8 * (1 - 0.25)]
+    if name == "ring4":
+        occ.addPoint(0, 0, 0, tag=100)
+        pt = {(r, k): occ.addPoint(r * math.cos(k * math.pi / 8), r * math.sin(k * math.pi / 8), 0)
+              for r in (0.5, 0.75, 1) for k in (0, 1, 2)}
+        arc = {(r, k): occ.addCircleArc(pt[r, k], 100, pt[r, k + 1])
+               for r in (0.5, 0.75, 1) for k in (0, 1)}
+        ray = {(r, k): occ.addLine(pt[r, k], pt[s, k])
+               for r, s in ((0.5, 0.75), (0.75, 1)) for k in (0, 1, 2)}
+        for k in (0, 1):
+            for r, s in ((0.5, 0.75), (0.75, 1)):
+                loop = occ.addCurveLoop([ray[r, k], arc[s, k], ray[r, k + 1], arc[r, k]])
+                occ.addPlaneSurface([loop])
+        occ.remove([(0, 100)])
+        return [math.pi / 16 * (s * s - r * r) for k in (0, 1) for r, s in ((0.5, 0.75), (0.75, 1))]
     if name == "channel":
         a = occ.addRectangle(0, 0, 0, 3, 1)
         b = occ.addDisk(1.2, 0.5, 0, 0.25, 0.25)

@@ -103,15 +103,23 @@ sq_status sq_api_name_tags(sq_quad_mesh *m, const sq_options *o, sq_error *err);
 sq_status sq_api_file_names(sq_quad_mesh *m, const cad_face *const *cad,
                             const sq_domain_curve *curves, int ncurves, sq_error *err);
 
-/* sq_face_mesh with the vertices on the face's edges where held_edges[e]
- * is 1 held where they are placed (a domain's shared curves; NULL: none). */
+
 /* --periodic: the pairs of face (periodic.h design 1) into per, logged;
  * the translations identified in lo's field and tracing (face_mesh.c). */
 sq_status sq_api_periodic_find(const cad_face *face, const sq_face_info *info,
                                const sq_options *o, sq_periodic *per, sq_layout_options *lo,
                                sq_error *err);
+/* The pairs found and the candidates left, as notes; the identified
+ * domain's Gauss–Bonnet count against q's (its periodic_* fields). */
+void sq_api_periodic_log(const sq_options *o, const sq_periodic *per);
+void sq_api_periodic_log_identified(const sq_options *o, const sq_quad_mesh *q, const char *road);
+/* sq_face_mesh with the vertices on the face's edges where held_edges[e]
+ * is 1 held where they are placed (a domain's shared curves; NULL: none),
+ * and on the layout road at least min_chords[e] chords on edge e (NULL:
+ * none; quad_mesher.h). */
 sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
-                           const int *held_edges, sq_mesh **out, sq_error *err);
+                           const int *held_edges, const int *min_chords, sq_mesh **out,
+                           sq_error *err);
 
 /* Appended to a cusp's refusal (sq_face_check_cusps): why healing left
  * it, the option that would blunt it. */

@@ -447,7 +447,7 @@ sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err)
 sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_mesh **out,
                        sq_error *err)
 {
-    SQ_TRY(sq_api_face_mesh(model, face, o, NULL, out, err));
+    SQ_TRY(sq_api_face_mesh(model, face, o, NULL, NULL, out, err));
     sq_options def;
     const cad_face *cad = (*out)->face.cad;
     sq_status st = sq_api_file_names((*out)->q, &cad, NULL, 0, err);
@@ -466,11 +466,8 @@ static void transform_text(const sq_periodic_pair *r, char *buf, size_t n)
         snprintf(buf, n, "translation by (%.9g, %.9g)", r->shift[0], r->shift[1]);
 }
 
-sq_status sq_api_periodic_find(const cad_face *face, const sq_face_info *info,
-                               const sq_options *o, sq_periodic *per, sq_layout_options *lo,
-                               sq_error *err)
+void sq_api_periodic_log(const sq_options *o, const sq_periodic *per)
 {
-    SQ_TRY(sq_periodic_find(face, info, o->periodic, per, err));
     char t[160];
     for (int k = 0; k < per->npairs; k++) {
         const sq_periodic_pair *r = &per->pairs[k];
@@ -484,6 +481,14 @@ sq_status sq_api_periodic_find(const cad_face *face, const sq_face_info *info,
         sq_api_log(o, SQ_LOG_NOTE, "periodic: edges %d and %d also match (%s), not taken: "
                    "--periodic %d:%d takes them", r->a, r->b, t, r->a, r->b);
     }
+}
+
+sq_status sq_api_periodic_find(const cad_face *face, const sq_face_info *info,
+                               const sq_options *o, sq_periodic *per, sq_layout_options *lo,
+                               sq_error *err)
+{
+    SQ_TRY(sq_periodic_find(face, info, o->periodic, per, err));
+    sq_api_periodic_log(o, per);
     lo->field.periodic = lo->trace.periodic = (sq_identification){per->nidentified, per->identified};
     return SQ_OK;
 }
@@ -508,16 +513,22 @@ static sq_status periodic_identified(sq_mesh *h, const sq_options *o, sq_error *
     sq_quad_mesh *q = h->q;
     SQ_TRY(sq_periodic_identified(&h->info, &h->per, q, &q->periodic_chi, &q->periodic_index,
                                   &q->periodic_irregular, &q->periodic_mesh_index, err));
+    sq_api_periodic_log_identified(o, q, h->road.name);
+    return SQ_OK;
+}
+
+void sq_api_periodic_log_identified(const sq_options *o, const sq_quad_mesh *q, const char *road)
+{
     sq_api_log(o, SQ_LOG_NOTE, "periodic: the identified domain has chi %d; its interior vertices "
                "need a net index %d (at least %d irregular); the mesh has %d irregular there "
                "(net index %d), by the %s road",
                q->periodic_chi, q->periodic_index, abs(q->periodic_index), q->periodic_irregular,
-               q->periodic_mesh_index, h->road.name);
-    return SQ_OK;
+               q->periodic_mesh_index, road);
 }
 
 sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
-                           const int *held_edges, sq_mesh **out, sq_error *err)
+                           const int *held_edges, const int *min_chords, sq_mesh **out,
+                           sq_error *err)
 {
     *out = NULL;
     sq_options def;
@@ -529,6 +540,7 @@ sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
     SQ_TRY(sq_api_layout_options(o, 1, &lo, err));
     SQ_TRY(sq_api_mesher_options(o, &mo, err));
     mo.held_edges = held_edges;
+    mo.min_chords = min_chords;
     sq_mesh *h = calloc(1, sizeof *h);
     if (!h || !(h->t_write = calloc(1, sizeof *h->t_write))) {
         free(h);

@@ -80,9 +80,11 @@ static sq_status faces_load(const sq_model *m, const int *faces, int n, const sq
 
 /* The faces with (shares 1) or without (0) a shared curve, each by its
  * own roads (as o says) at the domain's size, the vertices on its shared
- * curves held; their meshes taken into f->q. */
+ * curves held, at least minc[k][e] chords on its edges (minc NULL: none);
+ * their meshes taken into f->q. */
 static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
-                           const sq_options *o, int shares, const char **road, sq_error *err)
+                           const sq_options *o, int shares, int *const *minc, const char **road,
+                           sq_error *err)
 {
     for (int k = 0; k < f->n; k++) {
         if (sq_domain_face_shares(d, k) != shares) continue;
@@ -91,7 +93,8 @@ static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
         if (!held) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
         for (int e = 0; e < ne; e++) held[e] = d->curves[d->curve_of[k][e]].face[1] >= 0;
         sq_mesh *h = NULL;
-        sq_status st = sq_api_face_mesh(m, f->face[k].index, o, shares ? held : NULL, &h, err);
+        sq_status st = sq_api_face_mesh(m, f->face[k].index, o, shares ? held : NULL,
+                                        minc ? minc[k] : NULL, &h, err);
         free(held);
         if (st != SQ_OK) return st;
         road[k] = !strcmp(h->road.name, "split") ? "split" : "layout";
@@ -102,22 +105,110 @@ static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
     return SQ_OK;
 }
 
-/* The faces sharing curves by the layout road, each alone with its shared
- * curves' vertices held, merged: conforming only where their layouts put
- * the same vertices on each shared curve (faces whose chords agree: three
- * rectangles in a row); *merged NULL and a note where they do not. */
-static sq_status try_layouts(const sq_model *m, const sq_domain *d, faces_open *f,
-                             const sq_options *o, const int *faces, const char **road,
-                             sq_quad_mesh **merged, sq_error *err)
+/* Layout-road rounds of one quantization over the faces: a curve shared
+ * (or a pair) whose two sides got different chord counts asks both faces
+ * for the larger next round.  Counts only grow; a face whose layout
+ * splits such an edge cannot take the count, and the rounds stop there. */
+#define MAX_CHORD_ROUNDS 8
+
+static int sides_on(const sq_quad_mesh *q, int e)
+{
+    int n = 0;
+    for (int s = 0; s < q->nbnd; s++) n += q->bnd_tag[s] == e;
+    return n;
+}
+
+/* The chord counts of both sides of every interface of dm: 0 when they
+ * agree; else the larger asked of both in minc, 1 if that raised a
+ * request, -1 if not (a face did not take what it was asked). */
+static int agree_chords(const sq_domain *dm, sq_quad_mesh *const *q, int *const *minc)
+{
+    int differ = 0, raised = 0;
+    for (int c = 0; c < dm->ncurves; c++) {
+        const sq_domain_curve *cv = &dm->curves[c];
+        if (cv->face[1] < 0) continue;
+        int n0 = sides_on(q[cv->face[0]], cv->edge[0]), n1 = sides_on(q[cv->face[1]], cv->edge[1]);
+        int want = n0 > n1 ? n0 : n1, *m0 = &minc[cv->face[0]][cv->edge[0]],
+            *m1 = &minc[cv->face[1]][cv->edge[1]];
+        if (n0 == n1) continue;
+        differ = 1;
+        raised |= want > *m0 || want > *m1;
+        *m0 = *m1 = want;
+    }
+    return !differ ? 0 : raised ? 1 : -1;
+}
+
+/* The faces sharing curves (in dm: shared curves and periodic pairs) by
+ * the layout road, each alone with its shared curves' vertices held and
+ * the chord counts agreed between rounds, merged as d says, the pairs
+ * linked: conforming where their layouts put the same corners on each
+ * shared curve and pair (three rectangles in a row, the ring's four
+ * sectors); *merged NULL and err where they do not. */
+static sq_status try_layouts(const sq_model *m, const sq_domain *dm, const sq_domain *d,
+                             faces_open *f, const sq_options *o, const int *faces,
+                             const sq_periodic *per, const char **road, sq_quad_mesh **merged,
+                             sq_error *err)
 {
     sq_options ol = *o;
     ol.road = "layout";
-    sq_status st = mesh_each(m, d, f, &ol, 1, road, err);
+    int **minc = calloc((size_t)f->n, sizeof *minc), changed = 1, r = 0;
+    sq_status st = minc ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < f->n && st == SQ_OK; k++)
+        if (!(minc[k] = calloc((size_t)cad_face_num_edges(f->cad[k]) + 1, sizeof **minc)))
+            st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (; st == SQ_OK && changed == 1 && r < MAX_CHORD_ROUNDS; r++) {
+        for (int k = 0; k < f->n; k++)
+            if (sq_domain_face_shares(dm, k)) sq_quad_mesh_free(&f->q[k]);
+        st = mesh_each(m, dm, f, &ol, 1, minc, road, err);
+        if (st == SQ_OK) changed = agree_chords(dm, f->q, minc);
+    }
+    if (st == SQ_OK && changed)
+        st = SQ_FAIL(err, SQ_ERR_LAYOUT, "the faces' chord counts on a shared curve differ after "
+                     "%d rounds (a layout splits it at corners of its own)", r);
     if (st == SQ_OK) st = sq_domain_merge(d, f->q, faces, o->size, merged, err);
+    if (st == SQ_OK && per->npairs)
+        st = sq_periodic_link(per, *merged, o->size, SQ_PERIODIC_NODE_REL_TOL, err);
+    for (int k = 0; minc && k < f->n; k++) free(minc[k]);
+    free(minc);
     if (st == SQ_OK) return SQ_OK;
+    sq_quad_mesh_free(merged);
     for (int k = 0; k < f->n; k++)
-        if (sq_domain_face_shares(d, k)) sq_quad_mesh_free(&f->q[k]);
+        if (sq_domain_face_shares(dm, k)) sq_quad_mesh_free(&f->q[k]);
     return st;
+}
+
+/* --periodic on a domain: the pairs among its boundary curves (logged),
+ * and *s the domain whose interfaces also are the pairs. */
+static sq_status find_pairs(const sq_domain *d, const sq_options *o, sq_periodic *per,
+                            sq_domain *s, sq_error *err)
+{
+    SQ_TRY(sq_domain_periodic_find(d, o->periodic, per, err));
+    sq_api_periodic_log(o, per);
+    return sq_domain_periodic_split(d, per, s, err);
+}
+
+/* The split road over dm's sharing faces, merged as d says, the pairs
+ * linked. */
+static sq_status split_domain(const sq_domain *dm, const sq_domain *d, faces_open *f,
+                              const sq_mesher_options *mo, const int *faces, double size,
+                              const sq_periodic *per, const char **road, int *rounds,
+                              sq_quad_mesh **q, sq_error *err)
+{
+    SQ_TRY(sq_domain_mesh_split(dm, mo, f->q, rounds, err));
+    for (int k = 0; k < f->n; k++)
+        if (sq_domain_face_shares(dm, k)) road[k] = "split";
+    SQ_TRY(sq_domain_merge(d, f->q, faces, size, q, err));
+    return per->npairs ? sq_periodic_link(per, *q, size, SQ_PERIODIC_NODE_REL_TOL, err) : SQ_OK;
+}
+
+/* The identified domain's Gauss–Bonnet count on q, noted. */
+static sq_status pairs_counted(const sq_periodic *per, sq_quad_mesh *q, const sq_options *o,
+                               sq_error *err)
+{
+    SQ_TRY(sq_domain_periodic_identified(per, q, &q->periodic_chi, &q->periodic_index,
+                                         &q->periodic_irregular, &q->periodic_mesh_index, err));
+    sq_api_periodic_log_identified(o, q, "domain");
+    return SQ_OK;
 }
 
 /* The domain's record in h->dom, and its per-quad faces. */
@@ -142,12 +233,14 @@ static sq_status keep_domain(sq_mesh *h, const sq_domain *d, const faces_open *f
     return SQ_OK;
 }
 
-/* Several faces: the domain's curves, the meshes of its faces, merged. */
+/* Several faces: the domain's curves (and periodic pairs), the meshes of
+ * its faces, merged (and linked). */
 static sq_status mesh_domain(const sq_model *m, const int *faces, int n, const sq_options *o,
                              sq_mesh *h, sq_error *err)
 {
     faces_open f = {0};
-    sq_domain d = {0};
+    sq_domain d = {0}, ds = {0};
+    sq_periodic per = {0};
     sq_mesher_options mo;
     sq_options os = *o;
     const char **road = calloc((size_t)n, sizeof *road);
@@ -167,27 +260,31 @@ static sq_status mesh_domain(const sq_model *m, const int *faces, int n, const s
     if (st == SQ_OK) st = sq_domain_build(n, f.cad, f.info, tol, &d, err);
     if (st == SQ_OK && d.ninterfaces > 0)
         sq_api_log(o, SQ_LOG_NOTE, "%d faces share %d curves (docs/domains.md)", n, d.ninterfaces);
+    if (st == SQ_OK && o->periodic) st = find_pairs(&d, o, &per, &ds, err);
+    os.periodic = NULL; /* the domain's pairs, not each face's own */
+    const sq_domain *dm = per.npairs ? &ds : &d; /* the pairs as interfaces too */
     sq_api_road want = SQ_API_ROAD_AUTO;
     if (st == SQ_OK) st = sq_api_parse_road(o->road, &want, err);
-    if (st == SQ_OK) st = mesh_each(m, &d, &f, &os, 0, road, err);
+    if (st == SQ_OK) st = mesh_each(m, dm, &f, &os, 0, NULL, road, err);
     if (st == SQ_OK && want != SQ_API_ROAD_SPLIT) {
         sq_error e2;
         sq_error_clear(&e2);
-        sq_status s2 = d.ninterfaces ? try_layouts(m, &d, &f, &os, faces, road, &h->q, &e2)
-                                     : sq_domain_merge(&d, f.q, faces, os.size, &h->q, &e2);
-        if (s2 != SQ_OK && (want == SQ_API_ROAD_LAYOUT || !d.ninterfaces)) *err = e2, st = s2;
+        sq_status s2 = dm->ninterfaces
+                           ? try_layouts(m, dm, &d, &f, &os, faces, &per, road, &h->q, &e2)
+                           : sq_domain_merge(&d, f.q, faces, os.size, &h->q, &e2);
+        if (s2 != SQ_OK && (want == SQ_API_ROAD_LAYOUT || !dm->ninterfaces)) *err = e2, st = s2;
         else if (s2 != SQ_OK)
             sq_api_log(o, SQ_LOG_NOTE, "the layout road gives no conforming mesh of the faces (%s); "
-                                       "the faces sharing curves take the split road", e2.msg);
+                                       "the faces sharing curves%s take the split road", e2.msg,
+                       per.npairs ? " or periodic pairs" : "");
     }
-    if (st == SQ_OK && !h->q) {
-        st = sq_domain_mesh_split(&d, &mo, f.q, &rounds, err);
-        for (int k = 0; k < n && st == SQ_OK; k++)
-            if (sq_domain_face_shares(&d, k)) road[k] = "split";
-        if (st == SQ_OK) st = sq_domain_merge(&d, f.q, faces, os.size, &h->q, err);
-    }
+    if (st == SQ_OK && !h->q)
+        st = split_domain(dm, &d, &f, &mo, faces, os.size, &per, road, &rounds, &h->q, err);
+    if (st == SQ_OK && per.npairs) st = pairs_counted(&per, h->q, o, err);
     if (st == SQ_OK) st = sq_api_file_names(h->q, f.cad, d.curves, d.ncurves, err);
     if (st == SQ_OK) st = keep_domain(h, &d, &f, road, rounds, err);
+    sq_periodic_free(&per);
+    sq_domain_free(&ds);
     sq_domain_free(&d);
     faces_close(&f);
     free(road);
@@ -214,11 +311,6 @@ sq_status sq_model_mesh(const sq_model *m, const int *faces, int nfaces, const s
         int f = faces[0];
         free(all);
         return sq_face_mesh(m, f, o, out, err);
-    }
-    if (o->periodic) {
-        free(all);
-        return SQ_FAIL(err, SQ_ERR_USAGE, "--periodic takes one face (--face N): the pairs of a "
-                                          "domain of %d faces are not done yet", nfaces);
     }
     sq_mesh *h = calloc(1, sizeof *h);
     sq_status st = h && (h->t_write = calloc(1, sizeof *h->t_write))

@@ -66,8 +66,12 @@ static void print_report(FILE *fp, const sq_mesh *m, const sq_mesh_timings *t)
             "\"min_scaled_jacobian\": %.6g, \"inverted\": %d},\n",
             m->q->nquads, m->q->nnodes, m->q->order, q->area, exact, q->irregular_interior,
             q->eta_mean, q->eta_min, q->tau_percent, q->min_scaled_jacobian, q->inverted);
-    fprintf(fp, "  \"timings_s\": {\"read\": %.3f, \"mesh\": %.3f, \"write\": %.3f, \"total\": %.3f}\n}\n",
+    fprintf(fp, "  \"timings_s\": {\"read\": %.3f, \"mesh\": %.3f, \"write\": %.3f, \"total\": %.3f}",
             t->read, t->mesh, t->write, t->total);
+    sq_json j;
+    sq_json_init_in_object(&j, fp);
+    sq_json_periodic(&j, m->q); /* periodic pairs (docs/domains.md), if any */
+    fputs("\n}\n", fp);
 }
 
 sq_status sq_api_domain_report(const sq_mesh *m, const sq_mesh_timings *t, char **json,

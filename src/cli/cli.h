@@ -147,7 +147,8 @@ typedef struct {
 #define SQ_CLI_OPT_PERIODIC                                                                        \
     {.name = "periodic", .kind = SQ_CLI_WORD, .value = "auto|A:B[,C:D...]", .def = "none",         \
      .help = "periodic edges: auto, the pairs matching under a translation or rotation; A:B, "   \
-             "edge B the image of edge A (exit 9 if not); the field and separatrices of the "    \
+             "edge B the image of edge A (exit 9 if not; of several faces, A and B number "      \
+             "the domain's boundary curves, boundary_A); the field and separatrices of the "      \
              "identified domain (translations); MSH $Periodic (docs/domains.md)",                 \
      .target = SQ_CLI_AT(opt.periodic)}
 #define SQ_CLI_OPT_ALLOW_MISALIGNED                                                                \

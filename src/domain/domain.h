@@ -57,6 +57,11 @@ int sq_domain_face_shares(const sq_domain *d, int f);
 sq_status sq_domain_mesh_split(const sq_domain *d, const sq_mesher_options *mo, sq_quad_mesh **out,
                                int *rounds, sq_error *err);
 
+/* Face f's frame into face 0's: x0 = A0 x + A1 y + A2, y0 = A3 x + A4 y +
+ * A5; *flip when its normal is face 0's reversed (its boundary then runs
+ * clockwise in face 0's frame). */
+void sq_domain_frame(const sq_domain *d, int f, double A[6], int *flip);
+
 /* Design 4: the faces' meshes m[f] (each in its face's frame, boundary
  * tags its edges) merged into one, in face 0's frame, regions the faces
  * (region_face[f] = cad_index[f]), boundary tags the domain's; size: the

@@ -18,18 +18,30 @@ static void cross3(const double *a, const double *b, double *c)
     c[0] = a[1] * b[2] - a[2] * b[1], c[1] = a[2] * b[0] - a[0] * b[2], c[2] = a[0] * b[1] - a[1] * b[0];
 }
 
+void sq_domain_frame(const sq_domain *d, int f, double A[6], int *flip)
+{
+    double O0[3], X0[3], Y0[3], N0[3], O[3], X[3], Y[3], N[3], D[3];
+    cad_face_frame(d->faces[0], O0, X0, Y0);
+    cad_face_frame(d->faces[f], O, X, Y);
+    cross3(X0, Y0, N0);
+    cross3(X, Y, N);
+    *flip = dot3(N, N0) < 0.0;
+    for (int k = 0; k < 3; k++) D[k] = O[k] - O0[k];
+    A[0] = dot3(X, X0), A[1] = dot3(Y, X0), A[2] = dot3(D, X0);
+    A[3] = dot3(X, Y0), A[4] = dot3(Y, Y0), A[5] = dot3(D, Y0);
+}
+
 /* Face f's nodes into out (2 per node) in face 0's frame; *flip when its
  * normal is face 0's reversed.  SQ_ERR_GEOMETRY when it is not in face 0's
  * plane (a 2D domain is one plane). */
 static sq_status to_frame0(const sq_domain *d, int f, const sq_quad_mesh *m, double tol, double *out,
                            int *flip, sq_error *err)
 {
-    double O0[3], X0[3], Y0[3], N0[3], O[3], X[3], Y[3], N[3];
+    double O0[3], X0[3], Y0[3], N0[3], O[3], X[3], Y[3], A[6];
     cad_face_frame(d->faces[0], O0, X0, Y0);
     cad_face_frame(d->faces[f], O, X, Y);
     cross3(X0, Y0, N0);
-    cross3(X, Y, N);
-    *flip = dot3(N, N0) < 0.0;
+    sq_domain_frame(d, f, A, flip);
     for (int v = 0; v < m->nnodes; v++) {
         double P[3];
         for (int k = 0; k < 3; k++) P[k] = O[k] + m->xy[2 * v] * X[k] + m->xy[2 * v + 1] * Y[k] - O0[k];

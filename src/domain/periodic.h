@@ -68,9 +68,34 @@ typedef struct {
     sq_identified_pair *identified;
 } sq_periodic;
 
-/* Design 1: spec "auto" or "A:B[,C:D...]" (edge indices). SQ_ERR_USAGE for a
- * bad spec, SQ_ERR_PERIODIC for named edges that do not match or `auto`
- * finding none. */
+/* A curve pairs are sought among (design 1): edge `edge` of `face`, its
+ * points mapped into the frame the transforms are in by `frame` (an affine
+ * map as sq_periodic_pair.affine: a face of a domain into the domain's
+ * first face's frame) and travelled backwards where that face's normal is
+ * the first's reversed (flip), so that every curve has the domain on its
+ * left; ends: its start and end there (none when closed). */
+typedef struct {
+    const cad_face *face;
+    int edge;
+    double frame[6];
+    int flip, closed;
+    double ends[4];
+} sq_periodic_curve;
+
+/* Curve c of edge e of face (info its data). */
+void sq_periodic_curve_of(const cad_face *face, const sq_face_info *info, int e, const double frame[6],
+                          int flip, sq_periodic_curve *c);
+
+/* Design 1 over nc curves (pairs' a and b: indices into c), bbox the
+ * domain's box in the common frame (the tolerance is relative to it): spec
+ * "auto" or "A:B[,C:D...]". SQ_ERR_USAGE for a bad spec, SQ_ERR_PERIODIC
+ * for named curves that do not match or `auto` finding none.  Leaves
+ * sq_periodic.identified empty. */
+sq_status sq_periodic_find_curves(const sq_periodic_curve *c, int nc, const double bbox[4],
+                                  const char *spec, sq_periodic *p, sq_error *err);
+
+/* Design 1 on one face, its edges the curves, and the pairs the field is
+ * solved across (sq_periodic.identified). */
 sq_status sq_periodic_find(const cad_face *face, const sq_face_info *info, const char *spec,
                            sq_periodic *p, sq_error *err);
 void sq_periodic_free(sq_periodic *p); /* frees, zeroes */
@@ -100,5 +125,31 @@ sq_status sq_periodic_link(const sq_periodic *p, sq_quad_mesh *m, double size, d
 sq_status sq_periodic_identified(const sq_face_info *info, const sq_periodic *p,
                                  const sq_quad_mesh *m, int *chi, int *index, int *irregular,
                                  int *mesh_index, sq_error *err);
+
+/* Design 3 on any mesh: cls[v] (allocated here) the representative of node
+ * v's class, the nodes m's periodic links join; *irregular and
+ * *mesh_index as sq_periodic_identified's. */
+sq_status sq_periodic_node_classes(const sq_quad_mesh *m, int **cls, sq_error *err);
+sq_status sq_periodic_irregular(const sq_periodic *p, const sq_quad_mesh *m, int *irregular,
+                                int *mesh_index, sq_error *err);
+
+/* Several faces (domain_periodic.c, docs/domains.md): design 1 over the
+ * domain's boundary curves, numbered by their tags (pairs' a and b are
+ * tags), in the first face's frame. */
+sq_status sq_domain_periodic_find(const sq_domain *d, const char *spec, sq_periodic *p,
+                                  sq_error *err);
+
+/* s: d with every pair an interface too (b's curve a's second side), for
+ * sq_domain_mesh_split and the faces' held edges; its arrays its own
+ * (sq_domain_free), its faces and info d's. */
+sq_status sq_domain_periodic_split(const sq_domain *d, const sq_periodic *p, sq_domain *s,
+                                   sq_error *err);
+
+/* Design 3 on the merged mesh m of a domain (its links made): chi = V - E
+ * + F of the identified mesh, the index from the angles of its classes of
+ * vertices (the quads' corner angles summed), the irregular vertices as
+ * sq_periodic_irregular. */
+sq_status sq_domain_periodic_identified(const sq_periodic *p, const sq_quad_mesh *m, int *chi,
+                                        int *index, int *irregular, int *mesh_index, sq_error *err);
 
 #endif

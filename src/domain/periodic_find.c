@@ -7,9 +7,14 @@
 
 #define NCHECK 9 /* points checked per pair: s = 0, L/8, ..., L */
 
-static sq_status edge_at(const cad_face *f, int e, double frac, double xy[2], sq_error *err)
+/* Curve c at fraction u of its length, in the common frame and the
+ * curve's sense there. */
+static sq_status curve_at(const sq_periodic_curve *c, double u, double xy[2], sq_error *err)
 {
-    return cad_face_edge_eval(f, e, frac * cad_face_edge_length(f, e), xy, NULL, NULL, err);
+    double L = cad_face_edge_length(c->face, c->edge), p[2];
+    SQ_TRY(cad_face_edge_eval(c->face, c->edge, (c->flip ? 1.0 - u : u) * L, p, NULL, NULL, err));
+    sq_affine_map(c->frame, p, xy);
+    return SQ_OK;
 }
 
 /* The rigid motion taking p0 to q0 and p1 to q1 (|p1 - p0| = |q1 - q0| to
@@ -42,46 +47,32 @@ static int fit(const double p0[2], const double p1[2], const double q0[2], const
 }
 
 /* Largest |T(a at fraction u) - b at fraction 1 - u| over NCHECK points. */
-static sq_status pair_gap(const cad_face *f, int a, int b, const double T[6], double *gap,
-                          sq_error *err)
+static sq_status pair_gap(const sq_periodic_curve *a, const sq_periodic_curve *b, const double T[6],
+                          double *gap, sq_error *err)
 {
     *gap = 0.0;
     for (int k = 0; k < NCHECK; k++) {
         double u = (double)k / (NCHECK - 1), pa[2], pb[2], q[2];
-        SQ_TRY(edge_at(f, a, u, pa, err));
-        SQ_TRY(edge_at(f, b, 1.0 - u, pb, err));
+        SQ_TRY(curve_at(a, u, pa, err));
+        SQ_TRY(curve_at(b, 1.0 - u, pb, err));
         sq_affine_map(T, pa, q);
         *gap = fmax(*gap, hypot(q[0] - pb[0], q[1] - pb[1]));
     }
     return SQ_OK;
 }
 
-/* The vertex where edge e starts (end 0) or ends (end 1): the CAD
- * vertices themselves, not an arc length's inversion (which rounds to the
- * integration's tolerance). */
-static int vertex_of(const sq_face_info *info, int e, int end, double xy[2])
-{
-    for (int v = 0; v < info->nvertices; v++)
-        if ((end ? info->vertices[v].edge_in : info->vertices[v].edge_out) == e) {
-            xy[0] = info->vertices[v].x, xy[1] = info->vertices[v].y;
-            return 1;
-        }
-    return 0;
-}
-
-/* Edge a onto edge b (senses opposite): *ok and the transform in r. */
-static sq_status match(const cad_face *f, const sq_face_info *info, int a, int b, double tol,
-                       sq_periodic_pair *r, int *ok, sq_error *err)
+/* Curve a onto curve b (senses opposite): *ok and the transform in r. */
+static sq_status match(const sq_periodic_curve *c, int a, int b, double tol, sq_periodic_pair *r,
+                       int *ok, sq_error *err)
 {
     *ok = 0;
-    if (fabs(cad_face_edge_length(f, a) - cad_face_edge_length(f, b)) > tol) return SQ_OK;
-    double p0[2], p1[2], q0[2], q1[2];
-    if (!vertex_of(info, a, 0, p0) || !vertex_of(info, a, 1, p1) || !vertex_of(info, b, 1, q0) ||
-        !vertex_of(info, b, 0, q1))
-        return SQ_OK; /* a closed edge: no chord */
+    const sq_periodic_curve *ca = &c[a], *cb = &c[b];
+    if (fabs(cad_face_edge_length(ca->face, ca->edge) - cad_face_edge_length(cb->face, cb->edge)) > tol ||
+        ca->closed || cb->closed) /* a closed edge: no chord */
+        return SQ_OK;
     r->a = a, r->b = b, r->group = -1;
-    if (!fit(p0, p1, q0, q1, tol, r)) return SQ_OK;
-    SQ_TRY(pair_gap(f, a, b, r->affine, &r->gap, err));
+    if (!fit(&ca->ends[0], &ca->ends[2], &cb->ends[2], &cb->ends[0], tol, r)) return SQ_OK;
+    SQ_TRY(pair_gap(ca, cb, r->affine, &r->gap, err));
     *ok = r->gap <= tol;
     return SQ_OK;
 }
@@ -137,22 +128,27 @@ bad:
                    spec);
 }
 
+static double curve_length(const sq_periodic_curve *c)
+{
+    return cad_face_edge_length(c->face, c->edge);
+}
+
 /* Named pairs: each must match (its own transform); groups by transform. */
-static sq_status check_named(const cad_face *f, const sq_face_info *info, sq_periodic *p,
+static sq_status check_named(const sq_periodic_curve *c, const double bbox[4], sq_periodic *p,
                              sq_error *err)
 {
     for (int k = 0; k < p->npairs; k++) {
         sq_periodic_pair *r = &p->pairs[k];
         int a = r->a, b = r->b, ok;
-        SQ_TRY(match(f, info, a, b, p->tol, r, &ok, err));
+        SQ_TRY(match(c, a, b, p->tol, r, &ok, err));
         if (!ok)
             return SQ_FAIL(err, SQ_ERR_PERIODIC,
                            "--periodic %d:%d: edges %d (length %.9g) and %d (length %.9g) do not "
                            "match under a translation or a rotation within %.3g",
-                           a, b, a, cad_face_edge_length(f, a), b, cad_face_edge_length(f, b), p->tol);
+                           a, b, a, curve_length(&c[a]), b, curve_length(&c[b]), p->tol);
         r->group = k;
         for (int j = 0; j < k; j++)
-            if (same_transform(p->pairs[j].affine, r->affine, info->bbox, p->tol)) {
+            if (same_transform(p->pairs[j].affine, r->affine, bbox, p->tol)) {
                 take_transform(r, &p->pairs[j]);
                 break;
             }
@@ -161,22 +157,21 @@ static sq_status check_named(const cad_face *f, const sq_face_info *info, sq_per
 }
 
 /* `auto`: every matching ordered pair into all[] with its group. */
-static sq_status all_matches(const cad_face *f, const sq_face_info *info, double tol,
+static sq_status all_matches(const sq_periodic_curve *c, int nc, const double bbox[4], double tol,
                              sq_periodic_pair **all, int *n, int *ngroups, sq_error *err)
 {
-    int ne = cad_face_num_edges(f);
-    *all = malloc(sizeof **all * ((size_t)ne * (size_t)ne + 1));
+    *all = malloc(sizeof **all * ((size_t)nc * (size_t)nc + 1));
     if (!*all) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     *n = *ngroups = 0;
-    for (int a = 0; a < ne; a++)
-        for (int b = 0; b < ne; b++) {
+    for (int a = 0; a < nc; a++)
+        for (int b = 0; b < nc; b++) {
             sq_periodic_pair r;
             int ok;
             if (a == b) continue;
-            SQ_TRY(match(f, info, a, b, tol, &r, &ok, err));
+            SQ_TRY(match(c, a, b, tol, &r, &ok, err));
             if (!ok) continue;
             for (int k = 0; k < *n && r.group < 0; k++)
-                if (same_transform((*all)[k].affine, r.affine, info->bbox, tol)) take_transform(&r, &(*all)[k]);
+                if (same_transform((*all)[k].affine, r.affine, bbox, tol)) take_transform(&r, &(*all)[k]);
             if (r.group < 0) r.group = (*ngroups)++;
             (*all)[(*n)++] = r;
         }
@@ -187,12 +182,11 @@ static sq_status all_matches(const cad_face *f, const sq_face_info *info, double
  * as long (to tol), disjoint from those taken (a doubly periodic box); at
  * a tie a translation before a rotation (a square's sides also match by a
  * quarter turn about a corner). */
-static sq_status take_groups(const cad_face *f, sq_periodic_pair *all, int n, int ngroups,
-                             sq_periodic *p, sq_error *err)
+static sq_status take_groups(const sq_periodic_curve *c, int nc, sq_periodic_pair *all, int n,
+                             int ngroups, sq_periodic *p, sq_error *err)
 {
-    int ne = cad_face_num_edges(f);
     double *len = calloc((size_t)ngroups + 1, sizeof *len);
-    int *used = calloc((size_t)ne + 1, sizeof *used), *taken = calloc((size_t)ngroups + 1, sizeof *taken);
+    int *used = calloc((size_t)nc + 1, sizeof *used), *taken = calloc((size_t)ngroups + 1, sizeof *taken);
     int *rot = calloc((size_t)ngroups + 1, sizeof *rot);
     p->pairs = malloc(sizeof *p->pairs * ((size_t)n + 1));
     p->candidates = malloc(sizeof *p->candidates * ((size_t)n + 1));
@@ -200,8 +194,14 @@ static sq_status take_groups(const cad_face *f, sq_periodic_pair *all, int n, in
         free(len), free(used), free(taken), free(rot);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
-    for (int k = 0; k < n; k++)
-        len[all[k].group] += cad_face_edge_length(f, all[k].a), rot[all[k].group] = all[k].rotation;
+    /* a half turn's group holds (a, b) and (b, a): its length counted once */
+    for (int k = 0; k < n; k++) {
+        int again = 0;
+        for (int j = 0; j < k; j++)
+            again |= all[j].group == all[k].group && all[j].a == all[k].b && all[j].b == all[k].a;
+        if (!again) len[all[k].group] += curve_length(&c[all[k].a]);
+        rot[all[k].group] = all[k].rotation;
+    }
     double best = -1.0;
     for (int pass = 0; pass < ngroups; pass++) {
         int g = -1;
@@ -247,20 +247,20 @@ static sq_status identified(const cad_face *face, sq_periodic *p, sq_error *err)
     return SQ_OK;
 }
 
-sq_status sq_periodic_find(const cad_face *face, const sq_face_info *info, const char *spec,
-                           sq_periodic *p, sq_error *err)
+sq_status sq_periodic_find_curves(const sq_periodic_curve *c, int nc, const double bbox[4],
+                                  const char *spec, sq_periodic *p, sq_error *err)
 {
     memset(p, 0, sizeof *p);
-    p->tol = SQ_PERIODIC_REL_TOL * hypot(info->bbox[2] - info->bbox[0], info->bbox[3] - info->bbox[1]);
+    p->tol = SQ_PERIODIC_REL_TOL * hypot(bbox[2] - bbox[0], bbox[3] - bbox[1]);
     sq_status st;
     if (strcmp(spec, "auto") != 0) {
-        st = parse_spec(spec, cad_face_num_edges(face), p, err);
-        if (st == SQ_OK) st = check_named(face, info, p, err);
+        st = parse_spec(spec, nc, p, err);
+        if (st == SQ_OK) st = check_named(c, bbox, p, err);
     } else {
         sq_periodic_pair *all = NULL;
         int n = 0, ngroups = 0;
-        st = all_matches(face, info, p->tol, &all, &n, &ngroups, err);
-        if (st == SQ_OK) st = take_groups(face, all, n, ngroups, p, err);
+        st = all_matches(c, nc, bbox, p->tol, &all, &n, &ngroups, err);
+        if (st == SQ_OK) st = take_groups(c, nc, all, n, ngroups, p, err);
         free(all);
         if (st == SQ_OK && p->npairs == 0)
             st = SQ_FAIL(err, SQ_ERR_PERIODIC,
@@ -268,6 +268,45 @@ sq_status sq_periodic_find(const cad_face *face, const sq_face_info *info, const
                          "within %.3g",
                          p->tol);
     }
+    if (st != SQ_OK) sq_periodic_free(p);
+    return st;
+}
+
+/* The vertex where edge e starts (end 0) or ends (end 1): the CAD
+ * vertices themselves, not an arc length's inversion (which rounds to the
+ * integration's tolerance). */
+static int vertex_of(const sq_face_info *info, int e, int end, double xy[2])
+{
+    for (int v = 0; v < info->nvertices; v++)
+        if ((end ? info->vertices[v].edge_in : info->vertices[v].edge_out) == e) {
+            xy[0] = info->vertices[v].x, xy[1] = info->vertices[v].y;
+            return 1;
+        }
+    return 0;
+}
+
+void sq_periodic_curve_of(const cad_face *face, const sq_face_info *info, int e, const double frame[6],
+                          int flip, sq_periodic_curve *c)
+{
+    double p[2][2];
+    *c = (sq_periodic_curve){.face = face, .edge = e, .flip = flip};
+    memcpy(c->frame, frame, sizeof c->frame);
+    c->closed = !vertex_of(info, e, 0, p[0]) || !vertex_of(info, e, 1, p[1]);
+    if (c->closed) return;
+    sq_affine_map(frame, p[flip], &c->ends[0]);
+    sq_affine_map(frame, p[!flip], &c->ends[2]);
+}
+
+sq_status sq_periodic_find(const cad_face *face, const sq_face_info *info, const char *spec,
+                           sq_periodic *p, sq_error *err)
+{
+    static const double identity[6] = {1, 0, 0, 0, 1, 0};
+    int ne = cad_face_num_edges(face);
+    sq_periodic_curve *c = malloc(sizeof *c * ((size_t)ne + 1));
+    if (!c) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int e = 0; e < ne; e++) sq_periodic_curve_of(face, info, e, identity, 0, &c[e]);
+    sq_status st = sq_periodic_find_curves(c, ne, info->bbox, spec, p, err);
+    free(c);
     if (st == SQ_OK) st = identified(face, p, err);
     if (st != SQ_OK) sq_periodic_free(p);
     return st;

@@ -164,41 +164,56 @@ static sq_status identified_index(const sq_face_info *info, const sq_periodic *p
     return SQ_OK;
 }
 
-sq_status sq_periodic_identified(const sq_face_info *info, const sq_periodic *p,
-                                 const sq_quad_mesh *m, int *chi, int *index, int *irregular,
-                                 int *mesh_index, sq_error *err)
+sq_status sq_periodic_node_classes(const sq_quad_mesh *m, int **cls, sq_error *err)
 {
-    SQ_TRY(identified_index(info, p, chi, index, err));
-    /* the mesh: vertices joined by the links; quads around each class; a
-     * class on a boundary side of no pair is on the boundary */
-    int nn = m->nnodes, Q = m->order, npe = (Q + 1) * (Q + 1);
-    int *up = malloc(sizeof(int) * ((size_t)nn + 1)), *quads = calloc((size_t)nn + 1, sizeof(int));
-    char *corner = calloc((size_t)nn + 1, 1), *bnd = calloc((size_t)nn + 1, 1);
-    if (!up || !quads || !corner || !bnd) {
-        free(up), free(quads), free(corner), free(bnd);
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    }
+    int nn = m->nnodes, *up = malloc(sizeof(int) * ((size_t)nn + 1));
+    if (!(*cls = up)) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     for (int v = 0; v < nn; v++) up[v] = v;
     for (int l = 0; l < m->nperiodic; l++)
         for (int k = 0; k < m->periodic[l].nnodes; k++)
             up[find(up, m->periodic[l].node[k])] = find(up, m->periodic[l].master_node[k]);
+    for (int v = 0; v < nn; v++) up[v] = find(up, v);
+    return SQ_OK;
+}
+
+sq_status sq_periodic_irregular(const sq_periodic *p, const sq_quad_mesh *m, int *irregular,
+                                int *mesh_index, sq_error *err)
+{
+    /* the mesh: vertices joined by the links; quads around each class; a
+     * class on a boundary side of no pair is on the boundary */
+    int nn = m->nnodes, Q = m->order, npe = (Q + 1) * (Q + 1), *up = NULL;
+    SQ_TRY(sq_periodic_node_classes(m, &up, err));
+    int *quads = calloc((size_t)nn + 1, sizeof(int));
+    char *corner = calloc((size_t)nn + 1, 1), *bnd = calloc((size_t)nn + 1, 1);
+    if (!quads || !corner || !bnd) {
+        free(up), free(quads), free(corner), free(bnd);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
     for (int q = 0; q < m->nquads; q++)
         for (int c = 0; c < 4; c++) {
             int v = m->conn[(size_t)q * npe + sq_quad_side_node(Q, c, 0)];
-            corner[v] = 1, quads[find(up, v)]++;
+            corner[v] = 1, quads[up[v]]++;
         }
     for (int s = 0; s < m->nbnd; s++) {
         if (pair_of(p, m->bnd_tag[s]) >= 0) continue;
         const int *c = &m->conn[(size_t)m->bnd_quad[s] * npe];
-        bnd[find(up, c[sq_quad_side_node(Q, m->bnd_side[s], 0)])] = 1;
-        bnd[find(up, c[sq_quad_side_node(Q, m->bnd_side[s], Q)])] = 1;
+        bnd[up[c[sq_quad_side_node(Q, m->bnd_side[s], 0)]]] = 1;
+        bnd[up[c[sq_quad_side_node(Q, m->bnd_side[s], Q)]]] = 1;
     }
     *irregular = *mesh_index = 0;
     for (int v = 0; v < nn; v++) {
-        if (!corner[v] || find(up, v) != v || bnd[v]) continue;
+        if (!corner[v] || up[v] != v || bnd[v]) continue;
         *irregular += quads[v] != 4;
         *mesh_index += 4 - quads[v];
     }
     free(up), free(quads), free(corner), free(bnd);
     return SQ_OK;
+}
+
+sq_status sq_periodic_identified(const sq_face_info *info, const sq_periodic *p,
+                                 const sq_quad_mesh *m, int *chi, int *index, int *irregular,
+                                 int *mesh_index, sq_error *err)
+{
+    SQ_TRY(identified_index(info, p, chi, index, err));
+    return sq_periodic_irregular(p, m, irregular, mesh_index, err);
 }

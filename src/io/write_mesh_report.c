@@ -67,9 +67,7 @@ static void json_sizes(sq_json *j, const sq_size_report *s, double far)
     sq_json_end_object(j);
 }
 
-/* Periodic links (docs/domains.md): each pair's edges, its transform and
- * node count; the identified domain's Gauss–Bonnet count and the mesh's. */
-static void json_periodic(sq_json *j, const sq_quad_mesh *m)
+void sq_json_periodic(sq_json *j, const sq_quad_mesh *m)
 {
     if (m->nperiodic == 0) return;
     sq_json_key(j, "periodic");
@@ -164,7 +162,7 @@ void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, i
     sq_json_end_object(&j);
     json_groups(&j, m);
     json_sizes(&j, sz ? sz->report : NULL, sz ? sz->far : 0.0);
-    json_periodic(&j, m);
+    sq_json_periodic(&j, m);
     sq_json_key(&j, "timings_s");
     sq_json_begin_object(&j);
     sq_json_key_number(&j, "read", t->read);

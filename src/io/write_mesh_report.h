@@ -7,6 +7,7 @@
 #include <stdio.h>
 
 #include "cad.h"
+#include "json_writer.h"
 #include "layout_pipeline.h"
 #include "quad_mesh.h"
 #include "size_report.h"
@@ -47,5 +48,10 @@ void sq_print_mesh_report(FILE *fp, const char *input, const cad_model *model, i
                           const sq_layout_result *r, const sq_quad_mesh *m,
                           const sq_quad_quality *q, const sq_report_sizes *sz,
                           const sq_mesh_timings *t);
+
+/* The "periodic" key (docs/domains.md), when m has periodic links: each
+ * pair's edges, its transform and node count; the identified domain's
+ * Gauss–Bonnet count and the mesh's. */
+void sq_json_periodic(sq_json *j, const sq_quad_mesh *m);
 
 #endif

@@ -278,6 +278,11 @@ sq_status qm_quantize(const sq_layout *L, const double *len, double size, const 
                       sq_error *err)
 {
     for (int e = 0; e < L->nedges; e++) n[e] = edge_segments(len[e], size, grade[e], o);
+    for (int e = 0; o->min_chords && e < L->nedges; e++) {
+        int c = L->edges[e].cad_edge, whole = c >= 0;
+        for (int f = 0; whole && f < L->nedges; f++) whole = f == e || L->edges[f].cad_edge != c;
+        if (whole && n[e] < o->min_chords[c]) n[e] = o->min_chords[c];
+    }
     SQ_TRY(settle(L, len, size, need, partner, n, err));
     return o->slid.npairs ? equal_totals(L, len, size, need, &o->slid, n, err) : SQ_OK;
 }

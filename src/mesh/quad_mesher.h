@@ -71,6 +71,11 @@ typedef struct {
      * relaxation move them on no face, so the faces sharing e agree) */
     const sq_edge_points *edge_points;
     const int *held_edges;
+    /* faces of a domain whose layouts agree (docs/domains.md), NULL: none:
+     * per CAD edge, at least min_chords[e] chords where edge e is one
+     * layout edge (the count the face across a shared curve or a periodic
+     * pair needs; the quantization raises the opposite sides to match) */
+    const int *min_chords;
     /* threads for the refinement and the quality (0: the processors online) */
     int threads;
     /* a quantization of more quads is relaxed coarser and refined (design
