@@ -16,6 +16,7 @@
 
 #include "gauss.h"
 #include "sq_parallel.h"
+#include "sq_parallel_sort.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -53,6 +54,9 @@ double sq_quad_corner_eta(const double *const c[4])
     return eta_of(ang);
 }
 
+/* quads per range: a range's Bézier work arrays are set up once */
+#define QUALITY_GRAIN 64
+
 static const int CORNER[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
 /* The corner vertex of quad q at corner k. */
@@ -77,16 +81,34 @@ static double signed_area(const sq_quad_mesh *m, int q)
     return 0.5 * a;
 }
 
-/* Majority orientation of the corner polygons (quadstats.py). */
-static double orientation(const sq_quad_mesh *m)
+typedef struct {
+    const sq_quad_mesh *m;
+    signed char *sign; /* per quad: the sign of its corner polygon's area */
+} sign_pass;
+
+static sq_status area_signs(void *ctx, long begin, long end, sq_error *err)
 {
-    int npos = 0, nneg = 0;
-    for (int q = 0; q < m->nquads; q++) {
-        double a = signed_area(m, q);
-        npos += a > 0;
-        nneg += a < 0;
+    (void)err;
+    const sign_pass *p = ctx;
+    for (long q = begin; q < end; q++) {
+        double a = signed_area(p->m, (int)q);
+        p->sign[q] = (signed char)((a > 0) - (a < 0));
     }
-    return npos >= nneg ? 1.0 : -1.0;
+    return SQ_OK;
+}
+
+/* *orient: the majority orientation of the corner polygons (quadstats.py),
+ * the signs found on the threads and counted here. */
+static sq_status orientation(const sq_quad_mesh *m, int threads, double *orient, sq_error *err)
+{
+    sign_pass p = {m, malloc((size_t)m->nquads + 1)};
+    if (!p.sign) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    sq_status st = sq_parallel_for(threads, m->nquads, QUALITY_GRAIN, area_signs, &p, err);
+    long balance = 0;
+    for (int q = 0; q < m->nquads; q++) balance += p.sign[q];
+    *orient = balance >= 0 ? 1.0 : -1.0;
+    free(p.sign);
+    return st;
 }
 
 static void straight_angles(const sq_quad_mesh *m, int q, double orient, double ang[4])
@@ -146,7 +168,8 @@ sq_status sq_quad_mesh_eta_curved(const sq_quad_mesh *m, double *eta_curved, sq_
 {
     sq_quad_basis b;
     SQ_TRY(sq_quad_basis_init(&b, m->order, m->nodes, err));
-    double D[121], orient = orientation(m);
+    double D[121], orient;
+    SQ_TRY(orientation(m, 1, &orient, err));
     diff_matrix(&b, D);
     for (int q = 0; q < m->nquads; q++) {
         double ang[4];
@@ -206,6 +229,7 @@ typedef struct {
     double *eta, *sjac;
     quad_result *res;
     unsigned long long *keys; /* 4 per quad: its sides' vertex pairs */
+    int threads;
 } quality_pass;
 
 /* Area of quad q by Gauss quadrature of det J. */
@@ -291,7 +315,11 @@ static sq_status vertex_topology(const quality_pass *p, unsigned long long *keys
             angsum[v] += p->res[q].ang[k];
         }
     size_t ne = 4 * (size_t)nq;
-    qsort(keys, ne, sizeof *keys, cmp_u64);
+    sq_status st = sq_parallel_sort(p->threads, keys, ne, sizeof *keys, cmp_u64, err);
+    if (st != SQ_OK) {
+        free(valence), free(angsum), free(bnd);
+        return st;
+    }
     for (size_t i = 0; i < ne;) {
         size_t k = i;
         while (k < ne && keys[k] == keys[i]) k++;
@@ -352,9 +380,6 @@ static void reduce(const quality_pass *p, sq_quad_quality *qq)
     qq->inverted = inverted;
 }
 
-/* quads per range: a range's Bézier work arrays are set up once */
-#define QUALITY_GRAIN 64
-
 sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac, int threads,
                                sq_quad_quality *qq, sq_error *err)
 {
@@ -374,12 +399,14 @@ sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,
         gw[p] *= 0.5;
         sq_quad_basis_eval(&b, gx[p], gl[p], gdl[p]);
     }
+    double orient;
+    SQ_TRY(orientation(m, threads, &orient, err));
     quality_pass p = {.m = m, .D = D, .gw = gw, .gl = (const double(*)[11])gl,
-                      .gdl = (const double(*)[11])gdl, .orient = orientation(m), .ng = ng,
+                      .gdl = (const double(*)[11])gdl, .orient = orient, .ng = ng,
                       .eta = eta ? eta : malloc((size_t)nq * sizeof *eta),
                       .sjac = sjac ? sjac : malloc((size_t)nq * sizeof *sjac),
                       .res = malloc((size_t)nq * sizeof *p.res),
-                      .keys = malloc(4 * (size_t)nq * sizeof *p.keys)};
+                      .keys = malloc(4 * (size_t)nq * sizeof *p.keys), .threads = threads};
     sq_status st = p.eta && p.sjac && p.res && p.keys
                        ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK) st = sq_parallel_for(threads, nq, QUALITY_GRAIN, quality_range, &p, err);
