@@ -216,6 +216,7 @@ static int cmp_u64(const void *a, const void *b)
 typedef struct {
     double eta_curved, sj_nodes, area;
     double ang[4]; /* straight corner angles, for the vertices' angle sums */
+    int corner[4]; /* the corner vertices */
     int capped;
     char valid;
 } quad_result;
@@ -277,6 +278,7 @@ static sq_status quality_range(void *ctx, long begin, long end, sq_error *err)
         quad_result *r = &p->res[q];
         straight_angles(p->m, (int)q, p->orient, r->ang);
         p->eta[q] = eta_of(r->ang);
+        for (int k = 0; k < 4; k++) r->corner[k] = corner_vertex(p->m, (int)q, k);
         side_keys(p->m, (int)q, &p->keys[4 * q]);
         double ang[4];
         curved_angles(p->m, p->D, (int)q, p->orient, ang);
@@ -293,6 +295,32 @@ static sq_status quality_range(void *ctx, long begin, long end, sq_error *err)
     return st;
 }
 
+typedef struct {
+    const quality_pass *p;
+    int *valence;
+    double *angsum;
+} corner_pass;
+
+/* vertices per range: each range reads every quad's corners */
+#define CORNER_GRAIN 4096
+
+/* Valences and angle sums of vertices [begin, end): every quad's corners
+ * read, those of the range added in quad order (so each sum is the same
+ * for every thread count). */
+static sq_status corner_sums(void *ctx, long begin, long end, sq_error *err)
+{
+    (void)err;
+    const corner_pass *c = ctx;
+    for (int q = 0; q < c->p->m->nquads; q++)
+        for (int k = 0; k < 4; k++) {
+            int v = c->p->res[q].corner[k];
+            if (v < begin || v >= end) continue;
+            c->valence[v]++;
+            c->angsum[v] += c->p->res[q].ang[k];
+        }
+    return SQ_OK;
+}
+
 /* Valences and angle sums of the corner vertices (in quad order), the
  * boundary's by the edges used once (quadstats.py): the vertex counts of
  * qq.  keys[4 nquads] are sorted here. */
@@ -300,22 +328,22 @@ static sq_status vertex_topology(const quality_pass *p, unsigned long long *keys
                                  sq_quad_quality *qq, sq_error *err)
 {
     const sq_quad_mesh *m = p->m;
-    int nq = m->nquads;
-    int *valence = calloc((size_t)m->nnodes + 1, sizeof *valence);
-    double *angsum = calloc((size_t)m->nnodes + 1, sizeof *angsum);
-    char *bnd = calloc((size_t)m->nnodes + 1, 1);
+    int nq = m->nquads, nv = 0; /* corner vertices are < nv */
+    for (int q = 0; q < nq; q++)
+        for (int k = 0; k < 4; k++)
+            if (p->res[q].corner[k] >= nv) nv = p->res[q].corner[k] + 1;
+    corner_pass c = {p, calloc((size_t)nv + 1, sizeof *c.valence),
+                     calloc((size_t)nv + 1, sizeof *c.angsum)};
+    int *valence = c.valence;
+    double *angsum = c.angsum;
+    char *bnd = calloc((size_t)nv + 1, 1);
     if (!valence || !angsum || !bnd) {
         free(valence), free(angsum), free(bnd);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
-    for (int q = 0; q < nq; q++)
-        for (int k = 0; k < 4; k++) {
-            int v = corner_vertex(m, q, k);
-            valence[v]++;
-            angsum[v] += p->res[q].ang[k];
-        }
+    sq_status st = sq_parallel_for(p->threads, nv, CORNER_GRAIN, corner_sums, &c, err);
     size_t ne = 4 * (size_t)nq;
-    sq_status st = sq_parallel_sort(p->threads, keys, ne, sizeof *keys, cmp_u64, err);
+    if (st == SQ_OK) st = sq_parallel_sort(p->threads, keys, ne, sizeof *keys, cmp_u64, err);
     if (st != SQ_OK) {
         free(valence), free(angsum), free(bnd);
         return st;
@@ -329,7 +357,7 @@ static sq_status vertex_topology(const quality_pass *p, unsigned long long *keys
         }
         i = k;
     }
-    for (int v = 0; v < m->nnodes; v++) {
+    for (int v = 0; v < nv; v++) {
         if (!valence[v]) continue;
         qq->vertices++;
         if (!bnd[v]) {
