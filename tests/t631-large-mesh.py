@@ -25,7 +25,14 @@ examples/square_hole.step (order 4).  No time is asserted.
 4. Below the threshold nothing changes: `--size 0.04` with the default
    threshold (5e4) gives the same bytes as `--relax-max-quads 0`, and its report
    has no relaxed_at_quads.
-5. Bad values: --threads -1, --threads x, SEMQUAD_THREADS=x and
+5. Threads where the sorts and the MSH text writer split their work:
+   `--size 0.008 --relax-max-quads 5000` (about 15 000 quads relaxed at about
+   4 000): the refinement's side sort (4 per coarse quad) and the quality's
+   (4 per fine quad) run as N runs of sq_parallel_sort on N = 2, 3 threads
+   (runs of at least 4096 items), the valences and angle sums as N ranges of
+   the vertices (at least 4096 each), the MSH text as several chunks of about
+   4 MB; --threads 1, 2, 3 give the same bytes and reports.
+6. Bad values: --threads -1, --threads x, SEMQUAD_THREADS=x and
    --relax-max-quads -1 exit 2 with one line and no file.
 usage: t631-large-mesh.py SEMQUAD EXAMPLES_DIR"""
 import json
@@ -116,6 +123,26 @@ def part4(d, msh_small_default):
 
 
 def part5(d):
+    runs = []
+    for n in (1, 2, 3):
+        msh, rep = os.path.join(d, "s%d.msh" % n), os.path.join(d, "s%d.json" % n)
+        run("mesh", STEP, "-q", "--order", "4", "--size", "0.008", "--relax-max-quads", "5000",
+            "--threads", str(n), "-o", msh, "--report", rep)
+        runs.append((read(msh), report(rep)))
+    m = runs[0][1]["mesh"]
+    # 4 sides a quad, sorted in 3 runs of at least 4096 on 3 threads; 3 ranges of 4096
+    # vertices (more vertices than quads on a face with a hole: V = F + B/2 by Euler's
+    # formula, B the boundary edges); 2 chunks of 4 MB at least
+    check(4 * m.get("relaxed_at_quads", 0) >= 3 * 4096 and m["quads"] >= 3 * 4096
+          and len(runs[0][0]) > 2 * (4 << 20),
+          "%d quads relaxed at %s, %d MB of MSH" % (m["quads"], m.get("relaxed_at_quads"),
+                                                   len(runs[0][0]) >> 20))
+    for n in (2, 3):
+        check(runs[n - 1][0] == runs[0][0], "%d threads, sorted runs: MSH byte-identical" % n)
+        check(runs[n - 1][1] == runs[0][1], "%d threads, sorted runs: report identical" % n)
+
+
+def part6(d):
     out = os.path.join(d, "bad.msh")
     for args, env in ((["--threads", "-1"], None), (["--threads", "x"], None), ([], {"SEMQUAD_THREADS": "x"}),
                       (["--relax-max-quads", "-1"], None)):
@@ -131,6 +158,7 @@ def main():
         part23(d, msh1, rep1)
         part4(d, fine(d, "default"))
         part5(d)
+        part6(d)
     if failures:
         sys.exit("%d failed" % len(failures))
 

@@ -81,7 +81,7 @@ struct sq_mesh {
     double *sjac, *eta;
     int *bnd;
     int nbl;              /* boundary layers asked for (sq_options.nbl), for the blame */
-    int threads;          /* sq_options.threads, for the quality */
+    int threads;          /* sq_options.threads, for the quality and the edges */
     sq_size_field *sizes; /* the user's sizes (NULL: none), read by the mesher */
     double far_size;      /* the size the mesh was made at (--size, or the default) */
     sq_periodic per;      /* --periodic pairs (npairs 0: none) */

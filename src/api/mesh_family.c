@@ -83,7 +83,7 @@ sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const sq_optio
 sq_status sq_mesh_edge_lengths(const sq_mesh *m, double *mean, double *max, sq_error *err)
 {
     sq_quad_edges e;
-    SQ_TRY(sq_quad_edges_build(m->q, &e, err));
+    SQ_TRY(sq_quad_edges_build(m->q, m->threads, &e, err));
     sq_quad_edges_lengths(m->q, &e, mean, max);
     sq_quad_edges_free(&e);
     return SQ_OK;

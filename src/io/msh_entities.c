@@ -67,7 +67,7 @@ static sq_status list_curve_sides(const sq_quad_mesh *m, curve_side_list *cs, in
                                   sq_error *err)
 {
     sq_quad_edges ed = {0};
-    if (m->nregions > 1) SQ_TRY(sq_quad_edges_build(m, &ed, err));
+    if (m->nregions > 1) SQ_TRY(sq_quad_edges_build(m, 1, &ed, err));
     size_t cap = (size_t)m->nbnd + (m->nregions > 1 ? 4 * (size_t)m->nquads : 0) + 1;
     cs->side = malloc(sizeof(int) * cap), cs->curve = malloc(sizeof(int) * cap);
     cs->minus = malloc(sizeof(int) * cap);

@@ -2,6 +2,8 @@
  * quads' sides by their two corner vertices. */
 #include "quad_edges.h"
 
+#include "sq_parallel_sort.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -25,7 +27,8 @@ static int key_cmp(const void *pa, const void *pb)
     return (a->side > b->side) - (a->side < b->side);
 }
 
-sq_status sq_quad_edges_build(const sq_quad_mesh *m, sq_quad_edges *e, sq_error *err)
+sq_status sq_quad_edges_build(const sq_quad_mesh *m, int threads, sq_quad_edges *e,
+                              sq_error *err)
 {
     memset(e, 0, sizeof *e);
     size_t ns = 4 * (size_t)m->nquads;
@@ -43,7 +46,13 @@ sq_status sq_quad_edges_build(const sq_quad_mesh *m, sq_quad_edges *e, sq_error 
             int a = sq_quad_corner_node(m, q, k), b = sq_quad_corner_node(m, q, (k + 1) % 4);
             key[4 * q + k] = (side_key){a < b ? a : b, a < b ? b : a, 4 * q + k};
         }
-    qsort(key, ns, sizeof *key, key_cmp);
+    /* a total order (the side decides ties) */
+    sq_status st = sq_parallel_sort(threads, key, ns, sizeof *key, key_cmp, err);
+    if (st != SQ_OK) {
+        free(key);
+        sq_quad_edges_free(e);
+        return st;
+    }
     for (size_t s = 0; s < ns; s++) {
         if (s == 0 || key[s].lo != key[s - 1].lo || key[s].hi != key[s - 1].hi) {
             e->owner[e->nedges] = key[s].side;

@@ -18,7 +18,10 @@ typedef struct {
 /* Node index of corner k (0..3, counter-clockwise from (0,0)) of quad q. */
 int sq_quad_corner_node(const sq_quad_mesh *m, int q, int k);
 
-sq_status sq_quad_edges_build(const sq_quad_mesh *m, sq_quad_edges *e, sq_error *err);
+/* The sides' sort on `threads` threads (sq_parallel_sort: the same edges
+ * for every number). */
+sq_status sq_quad_edges_build(const sq_quad_mesh *m, int threads, sq_quad_edges *e,
+                              sq_error *err);
 void sq_quad_edges_free(sq_quad_edges *e); /* NULL-safe, zeroes *e */
 
 /* Mean and largest straight distance between the two vertices of an edge. */

@@ -16,6 +16,7 @@
 
 #include "gauss.h"
 #include "sq_parallel.h"
+#include "sq_parallel_sort.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -53,6 +54,9 @@ double sq_quad_corner_eta(const double *const c[4])
     return eta_of(ang);
 }
 
+/* quads per range: a range's Bézier work arrays are set up once */
+#define QUALITY_GRAIN 64
+
 static const int CORNER[4][2] = {{0, 0}, {1, 0}, {1, 1}, {0, 1}};
 
 /* The corner vertex of quad q at corner k. */
@@ -77,16 +81,34 @@ static double signed_area(const sq_quad_mesh *m, int q)
     return 0.5 * a;
 }
 
-/* Majority orientation of the corner polygons (quadstats.py). */
-static double orientation(const sq_quad_mesh *m)
+typedef struct {
+    const sq_quad_mesh *m;
+    signed char *sign; /* per quad: the sign of its corner polygon's area */
+} sign_pass;
+
+static sq_status area_signs(void *ctx, long begin, long end, sq_error *err)
 {
-    int npos = 0, nneg = 0;
-    for (int q = 0; q < m->nquads; q++) {
-        double a = signed_area(m, q);
-        npos += a > 0;
-        nneg += a < 0;
+    (void)err;
+    const sign_pass *p = ctx;
+    for (long q = begin; q < end; q++) {
+        double a = signed_area(p->m, (int)q);
+        p->sign[q] = (signed char)((a > 0) - (a < 0));
     }
-    return npos >= nneg ? 1.0 : -1.0;
+    return SQ_OK;
+}
+
+/* *orient: the majority orientation of the corner polygons (quadstats.py),
+ * the signs found on the threads and counted here. */
+static sq_status orientation(const sq_quad_mesh *m, int threads, double *orient, sq_error *err)
+{
+    sign_pass p = {m, malloc((size_t)m->nquads + 1)};
+    if (!p.sign) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    sq_status st = sq_parallel_for(threads, m->nquads, QUALITY_GRAIN, area_signs, &p, err);
+    long balance = 0;
+    for (int q = 0; q < m->nquads; q++) balance += p.sign[q];
+    *orient = balance >= 0 ? 1.0 : -1.0;
+    free(p.sign);
+    return st;
 }
 
 static void straight_angles(const sq_quad_mesh *m, int q, double orient, double ang[4])
@@ -146,7 +168,8 @@ sq_status sq_quad_mesh_eta_curved(const sq_quad_mesh *m, double *eta_curved, sq_
 {
     sq_quad_basis b;
     SQ_TRY(sq_quad_basis_init(&b, m->order, m->nodes, err));
-    double D[121], orient = orientation(m);
+    double D[121], orient;
+    SQ_TRY(orientation(m, 1, &orient, err));
     diff_matrix(&b, D);
     for (int q = 0; q < m->nquads; q++) {
         double ang[4];
@@ -193,6 +216,7 @@ static int cmp_u64(const void *a, const void *b)
 typedef struct {
     double eta_curved, sj_nodes, area;
     double ang[4]; /* straight corner angles, for the vertices' angle sums */
+    int corner[4]; /* the corner vertices */
     int capped;
     char valid;
 } quad_result;
@@ -206,6 +230,7 @@ typedef struct {
     double *eta, *sjac;
     quad_result *res;
     unsigned long long *keys; /* 4 per quad: its sides' vertex pairs */
+    int threads;
 } quality_pass;
 
 /* Area of quad q by Gauss quadrature of det J. */
@@ -253,6 +278,7 @@ static sq_status quality_range(void *ctx, long begin, long end, sq_error *err)
         quad_result *r = &p->res[q];
         straight_angles(p->m, (int)q, p->orient, r->ang);
         p->eta[q] = eta_of(r->ang);
+        for (int k = 0; k < 4; k++) r->corner[k] = corner_vertex(p->m, (int)q, k);
         side_keys(p->m, (int)q, &p->keys[4 * q]);
         double ang[4];
         curved_angles(p->m, p->D, (int)q, p->orient, ang);
@@ -269,6 +295,32 @@ static sq_status quality_range(void *ctx, long begin, long end, sq_error *err)
     return st;
 }
 
+typedef struct {
+    const quality_pass *p;
+    int *valence;
+    double *angsum;
+} corner_pass;
+
+/* vertices per range: each range reads every quad's corners */
+#define CORNER_GRAIN 4096
+
+/* Valences and angle sums of vertices [begin, end): every quad's corners
+ * read, those of the range added in quad order (so each sum is the same
+ * for every thread count). */
+static sq_status corner_sums(void *ctx, long begin, long end, sq_error *err)
+{
+    (void)err;
+    const corner_pass *c = ctx;
+    for (int q = 0; q < c->p->m->nquads; q++)
+        for (int k = 0; k < 4; k++) {
+            int v = c->p->res[q].corner[k];
+            if (v < begin || v >= end) continue;
+            c->valence[v]++;
+            c->angsum[v] += c->p->res[q].ang[k];
+        }
+    return SQ_OK;
+}
+
 /* Valences and angle sums of the corner vertices (in quad order), the
  * boundary's by the edges used once (quadstats.py): the vertex counts of
  * qq.  keys[4 nquads] are sorted here. */
@@ -276,22 +328,26 @@ static sq_status vertex_topology(const quality_pass *p, unsigned long long *keys
                                  sq_quad_quality *qq, sq_error *err)
 {
     const sq_quad_mesh *m = p->m;
-    int nq = m->nquads;
-    int *valence = calloc((size_t)m->nnodes + 1, sizeof *valence);
-    double *angsum = calloc((size_t)m->nnodes + 1, sizeof *angsum);
-    char *bnd = calloc((size_t)m->nnodes + 1, 1);
+    int nq = m->nquads, nv = 0; /* corner vertices are < nv */
+    for (int q = 0; q < nq; q++)
+        for (int k = 0; k < 4; k++)
+            if (p->res[q].corner[k] >= nv) nv = p->res[q].corner[k] + 1;
+    corner_pass c = {p, calloc((size_t)nv + 1, sizeof *c.valence),
+                     calloc((size_t)nv + 1, sizeof *c.angsum)};
+    int *valence = c.valence;
+    double *angsum = c.angsum;
+    char *bnd = calloc((size_t)nv + 1, 1);
     if (!valence || !angsum || !bnd) {
         free(valence), free(angsum), free(bnd);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
-    for (int q = 0; q < nq; q++)
-        for (int k = 0; k < 4; k++) {
-            int v = corner_vertex(m, q, k);
-            valence[v]++;
-            angsum[v] += p->res[q].ang[k];
-        }
+    sq_status st = sq_parallel_for(p->threads, nv, CORNER_GRAIN, corner_sums, &c, err);
     size_t ne = 4 * (size_t)nq;
-    qsort(keys, ne, sizeof *keys, cmp_u64);
+    if (st == SQ_OK) st = sq_parallel_sort(p->threads, keys, ne, sizeof *keys, cmp_u64, err);
+    if (st != SQ_OK) {
+        free(valence), free(angsum), free(bnd);
+        return st;
+    }
     for (size_t i = 0; i < ne;) {
         size_t k = i;
         while (k < ne && keys[k] == keys[i]) k++;
@@ -301,7 +357,7 @@ static sq_status vertex_topology(const quality_pass *p, unsigned long long *keys
         }
         i = k;
     }
-    for (int v = 0; v < m->nnodes; v++) {
+    for (int v = 0; v < nv; v++) {
         if (!valence[v]) continue;
         qq->vertices++;
         if (!bnd[v]) {
@@ -352,9 +408,6 @@ static void reduce(const quality_pass *p, sq_quad_quality *qq)
     qq->inverted = inverted;
 }
 
-/* quads per range: a range's Bézier work arrays are set up once */
-#define QUALITY_GRAIN 64
-
 sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac, int threads,
                                sq_quad_quality *qq, sq_error *err)
 {
@@ -374,12 +427,14 @@ sq_status sq_quad_mesh_quality(const sq_quad_mesh *m, double *eta, double *sjac,
         gw[p] *= 0.5;
         sq_quad_basis_eval(&b, gx[p], gl[p], gdl[p]);
     }
+    double orient;
+    SQ_TRY(orientation(m, threads, &orient, err));
     quality_pass p = {.m = m, .D = D, .gw = gw, .gl = (const double(*)[11])gl,
-                      .gdl = (const double(*)[11])gdl, .orient = orientation(m), .ng = ng,
+                      .gdl = (const double(*)[11])gdl, .orient = orient, .ng = ng,
                       .eta = eta ? eta : malloc((size_t)nq * sizeof *eta),
                       .sjac = sjac ? sjac : malloc((size_t)nq * sizeof *sjac),
                       .res = malloc((size_t)nq * sizeof *p.res),
-                      .keys = malloc(4 * (size_t)nq * sizeof *p.keys)};
+                      .keys = malloc(4 * (size_t)nq * sizeof *p.keys), .threads = threads};
     sq_status st = p.eta && p.sjac && p.res && p.keys
                        ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK) st = sq_parallel_for(threads, nq, QUALITY_GRAIN, quality_range, &p, err);

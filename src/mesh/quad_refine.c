@@ -215,7 +215,7 @@ static sq_status vertices(refine *r, sq_error *err)
 static sq_status run(refine *r, sq_error *err)
 {
     const sq_quad_mesh *m = r->m;
-    SQ_TRY(sq_quad_edges_build(m, &r->e, err));
+    SQ_TRY(sq_quad_edges_build(m, r->threads, &r->e, err));
     SQ_TRY(vertices(r, err));
     int N = r->N;
     long nn = r->nv + (long)r->e.nedges * (N - 1) + (long)m->nquads * (N - 1) * (N - 1);
