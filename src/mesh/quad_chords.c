@@ -54,11 +54,15 @@ static sq_status measure_weight(const sq_layout *L, const cad_face *face,
     if (o->field && o->field->size && (sz = o->field->size(o->field->ctx, x, elem)) > 0.0)
         *r = 1.0 / fmin(fmax(sz, 0.25), 4.0);
     if (o->sizes) {
-        /* the tangent by a central difference, one-sided at the ends */
+        /* the tangent by a central difference, one-sided at the ends: read
+         * only by boundary layers' walls */
         double a[2], b[2], dt = 1.0 / 4096.0, t0 = fmax(t - dt, 0.0), t1 = fmin(t + dt, 1.0);
-        SQ_TRY(sq_layout_edge_point(L, face, e, t0, a, err));
-        SQ_TRY(sq_layout_edge_point(L, face, e, t1, b, err));
-        double tg[2] = {b[0] - a[0], b[1] - a[1]};
+        double tg[2] = {0.0, 0.0};
+        if (o->nbl > 0) {
+            SQ_TRY(sq_layout_edge_point(L, face, e, t0, a, err));
+            SQ_TRY(sq_layout_edge_point(L, face, e, t1, b, err));
+            tg[0] = b[0] - a[0], tg[1] = b[1] - a[1];
+        }
         *r *= size / sq_size_field_eval_dir(o->sizes, x, tg, size);
     }
     return SQ_OK;
