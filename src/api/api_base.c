@@ -148,6 +148,7 @@ sq_status sq_api_mesher_options(const sq_options *o, sq_mesher_options *mo, sq_e
     mo->bl_first = o->bl_first;
     mo->bl_ratio = o->bl_ratio;
     mo->bl_layers = o->bl_layers;
+    mo->bl_gradation = o->size_gradation;
     if (mo->nbl > 0 && (!(mo->bl_first > 0.0) || mo->bl_layers < 1))
         return SQ_FAIL(err, SQ_ERR_USAGE, "--bl needs --bl-first d > 0 and --bl-layers n >= 1");
     if (!(o->min_quality >= 0.0 && o->min_quality <= 1.0))

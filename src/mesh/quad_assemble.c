@@ -93,9 +93,9 @@ static sq_status build_vmesh(const sq_layout *L, qm_patch_grid *grids, long nids
 }
 
 sq_status qm_assemble(const sq_layout *L, const cad_face *face, const sq_mesher_options *opt,
-                      const int *nseg, const int *grade, const double *cum, qm_vmesh *v,
-                      sq_error *err)
+                      const int *nseg, const double *cum, qm_vmesh *v, sq_error *err)
 {
+    int S = qm_size_samples(opt);
     qm_edge_nodes en = {0};
     qm_patch_grid *grids = calloc((size_t)L->npatches + 1, sizeof *grids);
     en.n = nseg;
@@ -118,10 +118,8 @@ sq_status qm_assemble(const sq_layout *L, const cad_face *face, const sq_mesher_
             st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
             break;
         }
-        qm_edge_fractions(L->edges[e].length, n, grade[e], opt, f);
-        if (!grade[e])
-            for (int k = 1; k < n; k++)
-                f[k] = qm_measure_fraction(&cum[(size_t)e * (SIZE_SAMPLES + 1)], f[k]);
+        for (int k = 1; k < n; k++)
+            f[k] = qm_measure_fraction(&cum[(size_t)e * (S + 1)], S, (double)k / n);
         for (int k = 1; k < n && st == SQ_OK; k++)
             st = sq_layout_edge_point(L, face, e, f[k], &en.pts[e][2 * k], err);
         free(f);

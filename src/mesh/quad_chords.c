@@ -27,31 +27,21 @@ double qm_quantized_quads(const sq_layout *L, const int *n)
     return quads;
 }
 
-/* Segments an edge of length len needs: its layers, then the rest at size. */
-static int edge_segments(double len, double size, int grade, const sq_mesher_options *o)
+/* Segments an edge of measure len needs at size `size`. */
+static int edge_segments(double len, double size)
 {
-    int ends = (grade & 1) + ((grade & 2) >> 1), nb = 0;
-    double rest = len;
-    while (ends && nb < o->bl_layers && rest - ends * o->bl_first * pow(o->bl_ratio, nb) > 0.0) {
-        rest -= ends * o->bl_first * pow(o->bl_ratio, nb);
-        nb++;
-    }
-    long v = lround(rest / size);
-    return (int)fmin((double)(ends * nb + (v < 1 ? 1 : v)), MAX_SEGMENTS);
+    long v = lround(len / size);
+    return (int)fmin((double)(v < 1 ? 1 : v), MAX_SEGMENTS);
 }
 
-/* Edge measure in units of the field's size: m[e] = the integral of
- * ds / e^H along edge e (its length when the field carries no size), and
- * its cumulative values at SIZE_SAMPLES + 1 equal arc-length fractions.
- * Boundary-layer edges keep their length: their grading is absolute. */
 /* Sub-intervals per sample where the user's size field is read: the
  * trapezoid rule's error on 1/h, (len/256)^2/12 |(1/h)''| per unit length,
  * stays far below a cell wherever h varies by the gradation's bound. */
 #define USER_SIZE_SUB 8
 
 /* The integrand at arc fraction t of edge e: 1 / e^H (bounded) times
- * size / h(x) where the user set sizes (so that m[e] / size = the
- * integral of 1/h). */
+ * size / h(x, tangent) where the user set sizes or boundary layers (so
+ * that m[e] / size = the integral of 1/h along the edge). */
 static sq_status measure_weight(const sq_layout *L, const cad_face *face,
                                 const sq_mesher_options *o, double size, int e, double t,
                                 int *elem, double *r, sq_error *err)
@@ -64,36 +54,50 @@ static sq_status measure_weight(const sq_layout *L, const cad_face *face,
      * bounded to a factor 4 either way */
     if (o->field && o->field->size && (sz = o->field->size(o->field->ctx, x, elem)) > 0.0)
         *r = 1.0 / fmin(fmax(sz, 0.25), 4.0);
-    if (o->sizes) *r *= size / sq_size_field_eval(o->sizes, x, size);
+    if (o->sizes) {
+        /* the tangent by a central difference, one-sided at the ends: read
+         * only by boundary layers' walls */
+        double a[2], b[2], dt = 1.0 / 4096.0, t0 = fmax(t - dt, 0.0), t1 = fmin(t + dt, 1.0);
+        double tg[2] = {0.0, 0.0};
+        if (o->nbl > 0) {
+            SQ_TRY(sq_layout_edge_point(L, face, e, t0, a, err));
+            SQ_TRY(sq_layout_edge_point(L, face, e, t1, b, err));
+            tg[0] = b[0] - a[0], tg[1] = b[1] - a[1];
+        }
+        *r *= size / sq_size_field_eval_dir(o->sizes, x, tg, size);
+    }
     return SQ_OK;
 }
 
+int qm_size_samples(const sq_mesher_options *o)
+{
+    return o->nbl > 0 ? SIZE_SAMPLES_BL : SIZE_SAMPLES;
+}
+
 /* Edge measure in units of the target size: m[e] = the integral of
- * size ds / (e^H h(x)) along edge e (its length with neither the field's
- * size nor the user's sizes), and its cumulative values at SIZE_SAMPLES + 1
- * equal arc-length fractions.  Boundary-layer edges keep their length:
- * their grading is absolute. */
+ * size ds / (e^H h(x, t)) along edge e (its length with neither the
+ * field's size nor the user's sizes), and its cumulative values at
+ * qm_size_samples + 1 equal arc-length fractions. */
 sq_status qm_size_measure(const sq_layout *L, const cad_face *face, const sq_face_info *info,
-                          const sq_mesher_options *o, const int *grade, double *m, double *cum,
-                          sq_error *err)
+                          const sq_mesher_options *o, double *m, double *cum, sq_error *err)
 {
     double size = sq_mesher_size(o, L->face_area);
-    int sub = o->sizes ? USER_SIZE_SUB : 1, ns = SIZE_SAMPLES * sub;
+    int S = qm_size_samples(o), sub = o->sizes ? USER_SIZE_SUB : 1, ns = S * sub;
     for (int e = 0; e < L->nedges; e++) {
-        double *c = &cum[(size_t)e * (SIZE_SAMPLES + 1)], prev = 1.0, r = 1.0;
+        double *c = &cum[(size_t)e * (S + 1)], prev = 1.0, r = 1.0;
         int elem = -1;
         c[0] = 0.0;
-        if (!grade[e]) SQ_TRY(measure_weight(L, face, o, size, e, 0.0, &elem, &prev, err));
-        for (int k = 1; k <= SIZE_SAMPLES; k++) {
+        SQ_TRY(measure_weight(L, face, o, size, e, 0.0, &elem, &prev, err));
+        for (int k = 1; k <= S; k++) {
             double acc = c[k - 1];
             for (int j = (k - 1) * sub + 1; j <= k * sub; j++) {
-                if (!grade[e]) SQ_TRY(measure_weight(L, face, o, size, e, (double)j / ns, &elem, &r, err));
+                SQ_TRY(measure_weight(L, face, o, size, e, (double)j / ns, &elem, &r, err));
                 acc += 0.5 * (prev + r) * L->edges[e].length / ns;
                 prev = r;
             }
             c[k] = acc;
         }
-        m[e] = c[SIZE_SAMPLES];
+        m[e] = c[S];
     }
     /* e^H is relative: scaled by c with c^2 the mean of e^{-2H} over the
      * face (sampled on a grid), so that about area / size^2 quads result,
@@ -112,23 +116,23 @@ sq_status qm_size_measure(const sq_layout *L, const cad_face *face, const sq_fac
                 cnt++;
             }
         double c = cnt ? sqrt(sum / cnt) : 1.0;
-        for (int e = 0; e < L->nedges; e++)
-            if (!grade[e]) {
-                m[e] /= c;
-                for (int k = 0; k <= SIZE_SAMPLES; k++) cum[(size_t)e * (SIZE_SAMPLES + 1) + k] /= c;
-            }
+        for (int e = 0; e < L->nedges; e++) {
+            m[e] /= c;
+            for (int k = 0; k <= S; k++) cum[(size_t)e * (S + 1) + k] /= c;
+        }
     }
     return SQ_OK;
 }
 
-/* Arc-length fraction where the cumulative measure cum reaches fraction u. */
-double qm_measure_fraction(const double *cum, double u)
+/* Arc-length fraction where the cumulative measure cum[S + 1] reaches
+ * fraction u. */
+double qm_measure_fraction(const double *cum, int S, double u)
 {
-    double target = u * cum[SIZE_SAMPLES];
+    double target = u * cum[S];
     int k = 0;
-    while (k < SIZE_SAMPLES - 1 && cum[k + 1] < target) k++;
+    while (k < S - 1 && cum[k + 1] < target) k++;
     double d = cum[k + 1] - cum[k];
-    return (k + (d > 0.0 ? (target - cum[k]) / d : 0.0)) / SIZE_SAMPLES;
+    return (k + (d > 0.0 ? (target - cum[k]) / d : 0.0)) / S;
 }
 
 void qm_periodic_partners(const sq_layout *L, const cad_face *face, const sq_mesher_options *o,
@@ -273,11 +277,10 @@ static sq_status equal_totals(const sq_layout *L, const double *len, double size
 }
 
 /* Design 1: chord quantization. */
-sq_status qm_quantize(const sq_layout *L, const double *len, double size, const int *grade,
-                      const double *need, const int *partner, const sq_mesher_options *o, int *n,
-                      sq_error *err)
+sq_status qm_quantize(const sq_layout *L, const double *len, double size, const double *need,
+                      const int *partner, const sq_mesher_options *o, int *n, sq_error *err)
 {
-    for (int e = 0; e < L->nedges; e++) n[e] = edge_segments(len[e], size, grade[e], o);
+    for (int e = 0; e < L->nedges; e++) n[e] = edge_segments(len[e], size);
     for (int e = 0; o->min_chords && e < L->nedges; e++) {
         int c = L->edges[e].cad_edge, whole = c >= 0;
         for (int f = 0; whole && f < L->nedges; f++) whole = f == e || L->edges[f].cad_edge != c;

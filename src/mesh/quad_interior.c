@@ -50,16 +50,16 @@ static sq_status patch_grid(const sq_layout *L, const cad_face *face, const sq_l
     return SQ_OK;
 }
 
-/* The integral of size / h along the grid line from x[a] by steps of
- * `step` (GRID intervals), midpoint rule. */
+/* The integral of size / h(x, t) along the grid line from x[a] by steps
+ * of `step` (GRID intervals, t the line's direction), midpoint rule. */
 static double line_measure(const sq_size_field *f, double size, const double (*x)[2], int a,
                            int step)
 {
     double m = 0.0;
     for (int i = 0; i < GRID; i++) {
         const double *p = x[a + i * step], *q = x[a + (i + 1) * step];
-        double mid[2] = {0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])};
-        m += hypot(q[0] - p[0], q[1] - p[1]) * size / sq_size_field_eval(f, mid, size);
+        double mid[2] = {0.5 * (p[0] + q[0]), 0.5 * (p[1] + q[1])}, t[2] = {q[0] - p[0], q[1] - p[1]};
+        m += hypot(t[0], t[1]) * size / sq_size_field_eval_dir(f, mid, t, size);
     }
     return m;
 }

@@ -32,7 +32,7 @@ sq_status sq_mesher_check_size(double area, double size, double max_quads, sq_er
     return SQ_OK;
 }
 
-/* keep[i] = 1 also at the vertices of sides on opt->held_edges (*keep
+/* keep[i] = 1 at the vertices of sides on opt->held_edges (*keep
  * allocated if NULL). */
 static sq_status held_keep(const sq_mesher_options *opt, const qm_vmesh *v, int **keep,
                            sq_error *err)
@@ -57,10 +57,9 @@ static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh
                         const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
 {
     int Q = opt->order;
-    /* the boundary layers keep their grading: no smoothing there */
+    /* boundary layers are the sizes' grading, which the relaxation keeps */
     int *keep = NULL;
-    sq_status st = qm_bl_keep(face, opt, v, &keep, err);
-    if (st == SQ_OK) st = held_keep(opt, v, &keep, err);
+    sq_status st = held_keep(opt, v, &keep, err);
     /* untangling, where transfinite interpolation folded a quad */
     int folded = 0;
     for (int q = 0; q < v->nq && st == SQ_OK; q++) folded += !qm_quad_valid(v, q);
@@ -81,7 +80,6 @@ static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh
         if (attempt < 2)
             st = qm_relax(face, info, v, keep, attempt == 0, opt, &work, &folded, err);
         if (folded) continue;
-        if (st == SQ_OK && opt->nbl > 0) st = qm_bl_march(face, opt, v, err);
         if (st == SQ_OK) st = qm_raise_order(face, v, Q, opt->nodes, opt, &m, err);
         sq_quad_quality qq;
         if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, opt->threads, &qq, err);
@@ -134,9 +132,8 @@ sq_status sq_mesh_linear_quads(const cad_face *face, const sq_face_info *info,
  * *levels = k (0: nseg kept). */
 #define RELAX_MAX_LEVELS 8
 static sq_status coarse_quantization(const sq_layout *L, const double *elen, double size,
-                                     const int *grade, const double *need,
-                                     const sq_mesher_options *opt, int *nseg, int *levels,
-                                     sq_error *err)
+                                     const double *need, const sq_mesher_options *opt, int *nseg,
+                                     int *levels, sq_error *err)
 {
     *levels = 0;
     double quads = qm_quantized_quads(L, nseg);
@@ -145,7 +142,7 @@ static sq_status coarse_quantization(const sq_layout *L, const double *elen, dou
         return SQ_OK;
     while (quads > opt->relax_max_quads && *levels < RELAX_MAX_LEVELS) {
         ++*levels;
-        SQ_TRY(qm_quantize(L, elen, ldexp(size, *levels), grade, need, NULL, opt, nseg, err));
+        SQ_TRY(qm_quantize(L, elen, ldexp(size, *levels), need, NULL, opt, nseg, err));
         quads = qm_quantized_quads(L, nseg);
     }
     return SQ_OK;
@@ -174,25 +171,18 @@ double sq_mesher_size(const sq_mesher_options *opt, double area)
     return opt->size > 0.0 ? opt->size : sq_mesher_default_size(area);
 }
 
-sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const sq_layout *L,
-                         const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
+/* The layout road from the options o (whose sizes carry the boundary
+ * layers' walls, sq_mesh_layout). */
+static sq_status mesh_layout(const cad_face *face, const sq_face_info *info, const sq_layout *L,
+                             const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
 {
-    *out = NULL;
-    int Q = opt->order;
-    if (Q < 1 || Q > 10) return SQ_FAIL(err, SQ_ERR_USAGE, "quad order %d outside 1..10", Q);
-    for (int q = 0; q < L->npatches; q++)
-        if (!is_quad(&L->patches[q]))
-            return SQ_FAIL(err, SQ_ERR_LAYOUT, "patch %d is not a quad (%d corners)", q,
-                           L->patches[q].ncorners);
     double size = sq_mesher_size(opt, L->face_area);
+    int S = qm_size_samples(opt);
     int *nseg = malloc(sizeof(int) * ((size_t)L->nedges + 1));
-    int *grade = malloc(sizeof(int) * ((size_t)L->nedges + 1));
     double *elen = malloc(sizeof(double) * ((size_t)L->nedges + 1));
-    double *cum = malloc(sizeof(double) * ((size_t)L->nedges * (SIZE_SAMPLES + 1) + 1));
-    sq_status st = nseg && grade && elen && cum ? SQ_OK
-                                                : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    if (st == SQ_OK) qm_bl_grading(L, info, opt, grade);
-    if (st == SQ_OK) st = qm_size_measure(L, face, info, opt, grade, elen, cum, err);
+    double *cum = malloc(sizeof(double) * ((size_t)L->nedges * (S + 1) + 1));
+    sq_status st = nseg && elen && cum ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) st = qm_size_measure(L, face, info, opt, elen, cum, err);
     double *need = st == SQ_OK && opt->sizes
                        ? malloc(sizeof(double) * 2 * ((size_t)L->npatches + 1))
                        : NULL;
@@ -204,7 +194,7 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
     if (st == SQ_OK && opt->periodic.npairs && !partner)
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     if (st == SQ_OK && partner) qm_periodic_partners(L, face, opt, size, partner);
-    if (st == SQ_OK) st = qm_quantize(L, elen, size, grade, need, partner, opt, nseg, err);
+    if (st == SQ_OK) st = qm_quantize(L, elen, size, need, partner, opt, nseg, err);
     free(partner);
     /* the quantization can exceed area / size^2 (one segment at least per
      * chord, sides matched): check its own count before allocating */
@@ -215,18 +205,43 @@ sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const s
                      "try a size of %.3g or more",
                      size, nquads, opt->max_quads, size * sqrt(nquads / opt->max_quads));
     int levels = 0;
-    if (st == SQ_OK) st = coarse_quantization(L, elen, size, grade, need, opt, nseg, &levels, err);
+    if (st == SQ_OK) st = coarse_quantization(L, elen, size, need, opt, nseg, &levels, err);
     free(need);
     qm_vmesh v = {0};
-    if (st == SQ_OK) st = qm_assemble(L, face, opt, nseg, grade, cum, &v, err);
+    if (st == SQ_OK) st = qm_assemble(L, face, opt, nseg, cum, &v, err);
     if (st == SQ_OK && opt->slid.npairs) st = qm_slide_periodic(face, opt, &v, err);
     if (st == SQ_OK) st = finish(face, info, &v, opt, out, err);
     qm_vmesh_free(&v);
     if (st == SQ_OK) st = refine_levels(face, levels, opt, out, err);
     if (st != SQ_OK) sq_quad_mesh_free(out);
     free(nseg);
-    free(grade);
     free(elen);
     free(cum);
+    return st;
+}
+
+sq_status sq_mesh_layout(const cad_face *face, const sq_face_info *info, const sq_layout *L,
+                         const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
+{
+    *out = NULL;
+    int Q = opt->order;
+    if (Q < 1 || Q > 10) return SQ_FAIL(err, SQ_ERR_USAGE, "quad order %d outside 1..10", Q);
+    for (int q = 0; q < L->npatches; q++)
+        if (!is_quad(&L->patches[q]))
+            return SQ_FAIL(err, SQ_ERR_LAYOUT, "patch %d is not a quad (%d corners)", q,
+                           L->patches[q].ncorners);
+    if (opt->nbl <= 0) return mesh_layout(face, info, L, opt, out, err);
+    /* boundary layers: a size normal to the walls that grows from the
+     * first height by the ratio, read by every stage as the user's sizes
+     * are (docs/sizes.md, "A boundary layer that blends in") */
+    sq_mesher_options o = *opt;
+    sq_size_field *walls = NULL;
+    SQ_TRY(sq_size_field_walls(face, opt->sizes, opt->bl_edges, opt->nbl, opt->bl_first,
+                               opt->bl_ratio, opt->bl_layers,
+                               opt->bl_gradation > 1.0 ? opt->bl_gradation : SQ_SIZE_GRADATION,
+                               &walls, err));
+    o.sizes = walls;
+    sq_status st = mesh_layout(face, info, L, &o, out, err);
+    sq_size_field_free(&walls);
     return st;
 }

@@ -46,11 +46,13 @@ typedef struct {
     int order;          /* Q, 1..10 (default 4) */
     double size;        /* target element size; <= 0: sqrt(area)/8 */
     sq_node_kind nodes; /* default GLL */
-    /* boundary layers: geometric grading of the chords normal to boundary
-     * CAD edges bl_edges[nbl] (Marcon §3.4) */
+    /* boundary layers on the CAD edges bl_edges[nbl]: the first cells of
+     * the blocks on them, first height bl_first growing by bl_ratio over
+     * bl_layers cells, then by bl_gradation (<= 1: SQ_SIZE_GRADATION) up
+     * to the isotropic size (docs/sizes.md) */
     int nbl;
     const int *bl_edges;
-    double bl_first, bl_ratio;
+    double bl_first, bl_ratio, bl_gradation;
     int bl_layers;
     /* the field traced, or NULL: where it carries a size (the H/θ field's
      * e^H, Jezdimirović 2021 eq. 21) the target size is size * e^H, so the

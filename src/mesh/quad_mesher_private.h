@@ -8,8 +8,11 @@
 #include "quad_mesher.h"
 #include "quad_relax.h"
 
-/* Samples of an edge's size measure (qm_size_measure). */
+/* Samples of an edge's size measure (qm_size_measure); with boundary
+ * layers more, so that the first cell (a few thousandths of the edge) is
+ * read from the cumulative measure, not interpolated across it. */
 #define SIZE_SAMPLES 32
+#define SIZE_SAMPLES_BL 128
 
 /* The nodes of every layout edge, placed once (design 2). */
 typedef struct {
@@ -42,22 +45,24 @@ typedef struct {
 long qm_side_count(const sq_layout_patch *p, int k, const int *n);
 /* Quads of a quantization: the product of each patch's two side counts. */
 double qm_quantized_quads(const sq_layout *L, const int *n);
-/* Each edge's measure m[e] and its cumulative values cum[e * (SIZE_SAMPLES
- * + 1) + k] (in units of the field's size where it carries one). */
+/* Samples S of each edge's cumulative measure under options o. */
+int qm_size_samples(const sq_mesher_options *o);
+/* Each edge's measure m[e] and its cumulative values cum[e * (S + 1) + k],
+ * S = qm_size_samples(o) (in units of the field's size where it carries
+ * one). */
 sq_status qm_size_measure(const sq_layout *L, const cad_face *face, const sq_face_info *info,
-                          const sq_mesher_options *o, const int *grade, double *m, double *cum,
-                          sq_error *err);
-/* Arc-length fraction where the cumulative measure cum reaches fraction u. */
-double qm_measure_fraction(const double *cum, double u);
+                          const sq_mesher_options *o, double *m, double *cum, sq_error *err);
+/* Arc-length fraction where the cumulative measure cum[S + 1] reaches
+ * fraction u. */
+double qm_measure_fraction(const double *cum, int S, double u);
 /* Segments per edge n[e], opposite sides of every patch matched; with
  * need (NULL: none), no fewer on sides k and k + 2 of patch q than
  * round(need[2 q + k] / size). */
 /* partner (NULL: none): layout edges whose counts are one (qm_periodic_partners);
  * o->slid: each pair's two curves one total (SQ_ERR_LAYOUT where the
  * layout's sheets cannot give it). */
-sq_status qm_quantize(const sq_layout *L, const double *len, double size, const int *grade,
-                      const double *need, const int *partner, const sq_mesher_options *o, int *n,
-                      sq_error *err);
+sq_status qm_quantize(const sq_layout *L, const double *len, double size, const double *need,
+                      const int *partner, const sq_mesher_options *o, int *n, sq_error *err);
 /* With identified edges (o->periodic): partner[e] the boundary piece on b
  * whose ends are the images of piece e's on a (and back) within a quarter
  * of the size, else -1. */
@@ -75,24 +80,12 @@ sq_status qm_interior_measure(const sq_layout *L, const cad_face *face,
 
 /* ---- quad_layers.c: boundary layers ---- */
 
-/* grade[e]: bit 1 graded from n0, bit 2 from n1. */
-void qm_bl_grading(const sq_layout *L, const sq_face_info *info, const sq_mesher_options *o,
-                   int *grade);
 /* Thickness of nb geometric layers. */
 double qm_bl_thickness(const sq_mesher_options *o, int nb);
-/* Arc-length fractions f[0..n] of an edge with n segments, graded. */
-void qm_edge_fractions(double len, int n, int grade, const sq_mesher_options *o, double *f);
-/* The layers' vertices put at their heights along the walls' normals. */
-sq_status qm_bl_march(const cad_face *face, const sq_mesher_options *o, qm_vmesh *v,
-                      sq_error *err);
 /* A side from A to B along a wall inside its layer (1: c, s0, s1, d0, d1 filled). */
 int qm_layer_side(const cad_face *face, const sq_mesher_options *o, double thick,
                   const double A[2], const double B[2], int *c, double *s0, double *s1,
                   double *d0, double *d1);
-/* *keep (calloc'ed, NULL without layers): 1 at the vertices within the
- * layers, which keep their grading. */
-sq_status qm_bl_keep(const cad_face *face, const sq_mesher_options *opt, const qm_vmesh *v,
-                     int **keep, sq_error *err);
 
 /* ---- quad_transfinite.c, quad_assemble.c: designs 2 and 3 ---- */
 
@@ -115,11 +108,10 @@ void qm_patch_grid_free(qm_patch_grid *g);
  * progress per patch. */
 sq_status qm_fill_patches(const sq_layout *L, const qm_edge_nodes *en, const sq_progress *progress,
                           long *next_id, qm_patch_grid *grids, sq_error *err);
-/* The vertex mesh of layout L with nseg[e] segments per edge (grade and
- * cum as from qm_bl_grading and qm_size_measure). */
+/* The vertex mesh of layout L with nseg[e] segments per edge, placed by
+ * the cumulative measures cum of qm_size_measure. */
 sq_status qm_assemble(const sq_layout *L, const cad_face *face, const sq_mesher_options *opt,
-                      const int *nseg, const int *grade, const double *cum, qm_vmesh *v,
-                      sq_error *err);
+                      const int *nseg, const double *cum, qm_vmesh *v, sq_error *err);
 void qm_vmesh_free(qm_vmesh *v);
 
 /* ---- quad_slide.c: route 1b of periodic pairs ---- */

@@ -237,20 +237,28 @@ static double corner_energy(const double e[4])
 
 /* With sizes: per quad, its target (quad_relax.h) from l0 and l1, its
  * mean lengths of sides 0 and 2 and of sides 1 and 3 at the start, scaled
- * by c = min(1, h / max(l0, l1)), h the size at its centre:
+ * by c = min(1, h(d0) / l0, h(d1) / l1), h(dk) the size at its centre in
+ * the direction dk of sides k and k + 2 (the same h both ways without
+ * boundary layers: c = min(1, h / max(l0, l1))):
  * t[2 q] = sqrt(l1 / l0), t[2 q + 1] = c^2 l0 l1 (its area). */
 static void start_targets(const sq_relax_mesh *m, double *t)
 {
     for (int q = 0; q < m->nq; q++) {
-        double l[2] = {0.0, 0.0}, x[2] = {0.0, 0.0};
+        double l[2] = {0.0, 0.0}, x[2] = {0.0, 0.0}, d[2][2] = {{0.0, 0.0}, {0.0, 0.0}};
         for (int k = 0; k < 4; k++) {
             const double *a = &m->xy[2 * m->quad[4 * q + k]],
                          *b = &m->xy[2 * m->quad[4 * q + (k + 1) % 4]];
             l[k % 2] += 0.5 * hypot(b[0] - a[0], b[1] - a[1]);
+            /* sides k and k + 2 run opposite ways round the quad */
+            double sgn = k < 2 ? 1.0 : -1.0;
+            d[k % 2][0] += sgn * (b[0] - a[0]);
+            d[k % 2][1] += sgn * (b[1] - a[1]);
             x[0] += 0.25 * a[0];
             x[1] += 0.25 * a[1];
         }
-        double c = fmin(1.0, sq_size_field_eval(m->sizes, x, m->far) / fmax(l[0], l[1]));
+        double c = 1.0;
+        for (int k = 0; k < 2; k++)
+            c = fmin(c, sq_size_field_eval_dir(m->sizes, x, d[k], m->far) / l[k]);
         t[2 * q] = sqrt(l[1] / l[0]);
         t[2 * q + 1] = c * c * l[0] * l[1];
     }

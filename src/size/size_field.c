@@ -23,7 +23,17 @@ typedef struct {
     double *poly, *h;
 } curved_edge;
 
+/* A wall (a boundary-layer CAD edge): its polyline; the size normal to
+ * it is wall_size() of the distance. */
+typedef struct {
+    double *poly;
+} wall;
+
 struct sq_size_field {
+    const sq_size_field *base; /* a walls field: the isotropic part is base's (NULL: far) */
+    int nwalls;
+    wall *walls;
+    double wall_b, wall_a, wall_t, wall_g; /* b + a d up to d = t, then growing by g - 1 */
     int n;
     source *src;
     int ncurved;
@@ -173,6 +183,8 @@ void sq_size_field_free(sq_size_field **f)
 {
     if (!f || !*f) return;
     for (int i = 0; i < (*f)->n; i++) free((*f)->src[i].poly);
+    for (int i = 0; i < (*f)->nwalls; i++) free((*f)->walls[i].poly);
+    free((*f)->walls);
     for (int i = 0; i < (*f)->ncurved; i++) free((*f)->curved[i].poly), free((*f)->curved[i].h);
     free((*f)->src);
     free((*f)->curved);
@@ -180,8 +192,9 @@ void sq_size_field_free(sq_size_field **f)
     *f = NULL;
 }
 
-/* Distance from x to the polyline p[EDGE_SAMPLES + 1]. */
-static double polyline_distance(const double *p, const double x[2])
+/* Distance from x to the polyline p[EDGE_SAMPLES + 1]; its nearest
+ * segment's unit normal into nrm (NULL: not wanted). */
+static double polyline_nearest(const double *p, const double x[2], double nrm[2])
 {
     double best = DBL_MAX;
     for (int k = 0; k < EDGE_SAMPLES; k++) {
@@ -189,7 +202,16 @@ static double polyline_distance(const double *p, const double x[2])
         double l2 = dx * dx + dy * dy;
         double t = l2 > 0.0 ? ((x[0] - ax) * dx + (x[1] - ay) * dy) / l2 : 0.0;
         t = fmin(fmax(t, 0.0), 1.0);
-        best = fmin(best, hypot(x[0] - ax - t * dx, x[1] - ay - t * dy));
+        double d = hypot(x[0] - ax - t * dx, x[1] - ay - t * dy);
+        if (d < best && nrm && l2 > 0.0) {
+            /* the direction from the foot where x is off the segment's
+             * line, else the segment's normal */
+            double ex = x[0] - ax - t * dx, ey = x[1] - ay - t * dy, el = hypot(ex, ey);
+            double sl = sqrt(l2);
+            nrm[0] = el > 1e-9 * sl ? ex / el : -dy / sl;
+            nrm[1] = el > 1e-9 * sl ? ey / el : dx / sl;
+        }
+        best = fmin(best, d);
     }
     return best;
 }
@@ -198,7 +220,7 @@ static double polyline_distance(const double *p, const double x[2])
 static double source_distance(const source *s, const double x[2])
 {
     switch (s->s.kind) {
-    case SQ_SIZE_EDGE: return polyline_distance(s->poly, x);
+    case SQ_SIZE_EDGE: return polyline_nearest(s->poly, x, NULL);
     case SQ_SIZE_POINT: return fmax(hypot(x[0] - s->s.x[0], x[1] - s->s.x[1]) - s->s.r, 0.0);
     default: {
         double dx = fmax(fmax(s->s.x[0] - x[0], x[0] - s->s.x1[0]), 0.0);
@@ -233,11 +255,68 @@ static double curvature_eval(const curved_edge *c, double slope, const double x[
 
 double sq_size_field_eval(const sq_size_field *f, const double x[2], double far)
 {
-    double h = far;
+    double h = f->base ? sq_size_field_eval(f->base, x, far) : far;
     for (int i = 0; i < f->n; i++) {
         const source *s = &f->src[i];
         h = fmin(h, s->s.h + s->slope * source_distance(s, x));
     }
     for (int i = 0; i < f->ncurved; i++) h = fmin(h, curvature_eval(&f->curved[i], f->slope, x));
     return h;
+}
+
+sq_status sq_size_field_walls(const cad_face *face, const sq_size_field *base, const int *edges,
+                              int n, double first, double ratio, int layers, double gradation,
+                              sq_size_field **out, sq_error *err)
+{
+    *out = NULL;
+    if (!(first > 0.0 && isfinite(first)) || !(ratio >= 1.0 && isfinite(ratio)) || layers < 1 ||
+        !(gradation > 1.0 && isfinite(gradation)))
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "boundary layer: first height %g, ratio %g, %d layers, gradation %g (expects "
+                       "> 0, >= 1, >= 1, > 1)", first, ratio, layers, gradation);
+    for (int i = 0; i < n; i++)
+        if (edges[i] < 0 || edges[i] >= cad_face_num_edges(face))
+            return SQ_FAIL(err, SQ_ERR_USAGE, "boundary layer: edge %d, the face has edges 0..%d",
+                           edges[i], cad_face_num_edges(face) - 1);
+    sq_size_field *f = calloc(1, sizeof *f);
+    if (!f || !(f->walls = calloc((size_t)n + 1, sizeof *f->walls))) {
+        free(f);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    f->base = base;
+    /* h = b + a d, a = ln r: the k-th cell of its equidistribution is
+     * (b / a)(e^a - 1) e^{a k} = first r^k when b = first a / (r - 1) */
+    f->wall_a = log(ratio);
+    f->wall_b = ratio > 1.0 ? first * f->wall_a / (ratio - 1.0) : first;
+    /* the layers' thickness first (r^n - 1) / (r - 1), where the integral
+     * of 1 / (b + a d) reaches n; beyond, a growth of ln g per unit
+     * distance gives cells growing by g */
+    f->wall_t = ratio > 1.0 ? first * (pow(ratio, layers) - 1.0) / (ratio - 1.0) : first * layers;
+    f->wall_g = log(gradation);
+    sq_status st = SQ_OK;
+    for (int i = 0; i < n && st == SQ_OK; i++)
+        st = sample_edge(face, edges[i], &f->walls[i].poly, err), f->nwalls = i + 1;
+    if (st != SQ_OK) sq_size_field_free(&f);
+    *out = f;
+    return st;
+}
+
+double sq_size_field_eval_dir(const sq_size_field *f, const double x[2], const double t[2],
+                              double far)
+{
+    double h = sq_size_field_eval(f, x, far);
+    if (!f->nwalls) return h;
+    /* the metric (1/hn^2) n n^T + (1/h^2)(I - n n^T) of each wall, hn its
+     * normal size (at most h), read along t; the finest wall wins */
+    double tl = hypot(t[0], t[1]), inv = 1.0 / h;
+    for (int i = 0; i < f->nwalls && tl > 0.0; i++) {
+        double nrm[2];
+        double d = polyline_nearest(f->walls[i].poly, x, nrm);
+        double hn = fmin(h, d <= f->wall_t ? f->wall_b + f->wall_a * d
+                                           : f->wall_b + f->wall_a * f->wall_t +
+                                                 f->wall_g * (d - f->wall_t));
+        double c = (t[0] * nrm[0] + t[1] * nrm[1]) / tl;
+        inv = fmax(inv, sqrt(c * c / (hn * hn) + (1.0 - c * c) / (h * h)));
+    }
+    return 1.0 / inv;
 }

@@ -29,6 +29,24 @@ void sq_size_field_free(sq_size_field **f); /* NULL-safe, NULLs *f */
  * x. */
 double sq_size_field_eval(const sq_size_field *f, const double x[2], double far);
 
+/* A boundary layer's field (docs/sizes.md): the isotropic sizes of base
+ * (NULL: the far size alone; base must outlive it), and near the CAD
+ * edges edges[n] (the walls) a size normal to them of b + (ln ratio) d at
+ * distance d, b = first ln ratio / (ratio - 1), whose equidistribution
+ * gives cells first, first ratio, first ratio^2, ... over `layers` cells,
+ * then growing by ln(gradation) per unit distance (cells growing by
+ * gradation) until it reaches the isotropic size; along the walls the
+ * isotropic size. */
+sq_status sq_size_field_walls(const cad_face *face, const sq_size_field *base, const int *edges,
+                              int n, double first, double ratio, int layers, double gradation,
+                              sq_size_field **out, sq_error *err);
+
+/* The size at x along the direction t (not necessarily unit): the
+ * isotropic size, smaller across a wall's layers (sq_size_field_walls);
+ * sq_size_field_eval exactly where f has no walls. */
+double sq_size_field_eval_dir(const sq_size_field *f, const double x[2], const double t[2],
+                              double far);
+
 /* SQ_ERR_USAGE naming the first bad source of src[n] (the checks of
  * sq_size_field_create that need no face). */
 sq_status sq_size_sources_check(const sq_size_source *src, int n, double gradation, sq_error *err);

@@ -1,0 +1,150 @@
+"""t643: a boundary layer that blends in (issue 24, docs/sizes.md "A
+boundary layer that blends in"): the Schaefer-Turek 2D-2 channel
+([0, 2.2] x [0, 0.41] minus a circle of diameter 0.1 at (0.2, 0.2), written
+by step_face.py) meshed with a wake refinement (--refine-box) and a
+boundary layer on the cylinder (edge 4): first height h0, ratio r over n
+layers, then the gradation g up to the isotropic size.
+
+- Valid and good: no inverted quad, the Bezier-bounded smallest scaled
+  Jacobian and the worst eta at least 0.3 each (the issue's floor).
+- Continuity: from every node on the cylinder, the grid line leaving it
+  (the quads' sides, through interior nodes of valence 4) is followed
+  outwards; every such line runs through all the layers (further from the
+  wall at every step) and ends on a core node: a cell as large as the
+  isotropic size, or an irregular node (the O-grid's corners, where the
+  spokes end) beyond the layers' thickness.  The layers are the first
+  cells of the blocks, not a strip whose lines stop.
+- Heights along every line (docs/sizes.md states the bound): the nodes
+  are placed by equidistributing the metric along the O-grid's spokes
+  (to the sampling: 128 x 8 trapezoid sub-intervals a spoke), inside the
+  ring by the transfinite map, which scales the spokes' grading by the
+  ring's width over the spoke's length: here >= 0.6 (spokes 0.021-0.026
+  long, the ring 0.0144 wide mid-patch).  So the first cell lies in
+  [0.6 h0 / 1.05, 1.05 h0] (1.05: the relaxation's moves, measured within
+  3 %), and a cell at most g / 0.6 times the one before (where the
+  compressed ring meets the outer blocks; within the layers r).  Measured:
+  first cells 0.63-1.01 h0, largest ratio 1.99.
+Usage: t643-bl-blend.py SEMQUAD"""
+import json
+import math
+import os
+import subprocess
+import sys
+import tempfile
+
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+from step_face import step_face  # noqa: E402
+
+try:
+    import gmsh
+except ImportError:
+    sys.exit(77)
+
+SEMQUAD = sys.argv[1]
+XC, YC, R = 0.2, 0.2, 0.05
+H0, RATIO, LAYERS, G = 0.002, 1.3, 4, 1.3
+SIZE = 0.02
+SQUEEZE, MOVE = 0.6, 1.05
+fails = []
+
+
+def mesh_quads(path):
+    """Corner points and corner node tags of every quad of a MSH file."""
+    gmsh.open(path)
+    tags, xyz, _ = gmsh.model.mesh.getNodes()
+    pos = {int(t): (xyz[3 * i], xyz[3 * i + 1]) for i, t in enumerate(tags)}
+    quads = []
+    for t, nodes in zip(*gmsh.model.mesh.getElements(2)[::2]):
+        npe = gmsh.model.mesh.getElementProperties(t)[3]
+        quads += [[int(nodes[npe * e + k]) for k in range(4)] for e in range(len(nodes) // npe)]
+    return pos, quads
+
+
+def wall(p):
+    return math.hypot(p[0] - XC, p[1] - YC) - R
+
+
+def lines(pos, quads):
+    """Every grid line leaving the cylinder: its nodes' distances from it."""
+    nbr, quads_at = {}, {}
+    for qi, q in enumerate(quads):
+        for k in range(4):
+            a, b = q[k], q[(k + 1) % 4]
+            nbr.setdefault(a, set()).add(b)
+            nbr.setdefault(b, set()).add(a)
+            quads_at.setdefault(a, set()).add(qi)
+    on = {v for v in pos if v in nbr and abs(wall(pos[v])) < 1e-9}
+    out = []
+    for w in sorted(on):
+        up = [v for v in nbr[w] if v not in on]
+        if len(up) != 1:
+            fails.append("wall node %d: %d edges leave the wall" % (w, len(up)))
+            continue
+        prev, cur, dist = w, up[0], [0.0, wall(pos[up[0]])]
+        # the next node: the neighbour of cur sharing no quad with prev
+        while len(nbr[cur]) == 4 and len(quads_at[cur]) == 4:
+            nxt = [v for v in nbr[cur] if v != prev and not (quads_at[v] & quads_at[prev])]
+            if len(nxt) != 1:
+                break
+            prev, cur = cur, nxt[0]
+            dist.append(wall(pos[cur]))
+            if dist[-1] - dist[-2] >= SIZE:  # the core reached
+                break
+        irregular = len(nbr[cur]) != 4 or len(quads_at[cur]) != 4
+        out.append((w, dist, irregular))
+    return out
+
+
+def main():
+    gmsh.initialize()
+    gmsh.option.setNumber("General.Terminal", 0)
+    with tempfile.TemporaryDirectory() as d:
+        step, msh, rep = (os.path.join(d, n) for n in ("dfg.step", "dfg.msh", "dfg.json"))
+        step_face(step, [[(0, 0), (2.2, 0), (2.2, 0.41), (0, 0.41)], ("circle", XC, YC, R)],
+                  unit="m")
+        r = subprocess.run([SEMQUAD, "mesh", step, "-q", "--order", "2", "--size", str(SIZE),
+                            "--refine-box", "0.25,0.14,1.2,0.26,0.01",
+                            "--bl", "4", "--bl-first", str(H0), "--bl-ratio", str(RATIO),
+                            "--bl-layers", str(LAYERS), "-o", msh, "--report", rep],
+                           capture_output=True, text=True, timeout=600)
+        if r.returncode:
+            print("FAIL mesh: exit %d: %s" % (r.returncode, r.stderr.strip()))
+            return 1
+        m = json.load(open(rep))["mesh"]
+        print("%d quads, worst eta %.3f, scaled Jacobian %.3f" %
+              (m["quads"], m["quality"]["min"], m["min_scaled_jacobian"]))
+        if m["inverted"] or not m["min_scaled_jacobian"] >= 0.3 or not m["quality"]["min"] >= 0.3:
+            fails.append("inverted %d, scaled Jacobian %.3g, worst eta %.3g (floor 0.3)"
+                         % (m["inverted"], m["min_scaled_jacobian"], m["quality"]["min"]))
+        pos, quads = mesh_quads(msh)
+    gmsh.finalize()
+    found = lines(pos, quads)
+    first, worst = [], 0.0
+    thick = H0 * (RATIO ** LAYERS - 1) / (RATIO - 1)
+    for w, dist, irregular in found:
+        steps = [b - a for a, b in zip(dist, dist[1:])]
+        if min(steps) <= 0.0:
+            fails.append("wall node %d: its line turns back to the wall" % w)
+            continue
+        if len(steps) <= LAYERS or not (steps[-1] >= SIZE / G or irregular and dist[-1] > thick):
+            fails.append("wall node %d: its line stops %.4g from the wall, after %d cells, "
+                         "before the core" % (w, dist[-1], len(steps)))
+        first.append(steps[0] / H0)
+        worst = max(worst, max(b / a for a, b in zip(steps, steps[1:])))
+    print("%d lines, first cell %.3f..%.3f h0, largest ratio of neighbours %.3f"
+          % (len(found), min(first), max(first), worst))
+    if not found:
+        fails.append("no line leaves the cylinder")
+    if first and not (SQUEEZE / MOVE <= min(first) and max(first) <= MOVE):
+        fails.append("first cells %.3f..%.3f h0, outside [%.3g, %g]"
+                     % (min(first), max(first), SQUEEZE / MOVE, MOVE))
+    if worst > max(RATIO, G) / SQUEEZE:
+        fails.append("neighbour cells along a line differ by %.3f, above %.3f"
+                     % (worst, max(RATIO, G) / SQUEEZE))
+    for f in fails:
+        print("FAIL", f)
+    return 1 if fails else 0
+
+
+if __name__ == "__main__":
+    sys.exit(main())
