@@ -24,7 +24,9 @@ The solver (our own, with DOLFINx's assembly and PETSc's LU):
     the cylinder turned briefly (t in [1, 2], surface speed --kick) so the
     symmetric wake breaks at once rather than from round-off; an optional
     spin-up at a larger time step (--dt-spinup until --t-spinup) then the
-    measured time step until --t-end;
+    measured time step until --t-end; --save keeps the last two steps'
+    solutions and --restart continues from them (another time step, a
+    longer run) without the spin-up again;
   - over the last --window seconds: max c_D, max c_L (the discrete maxima
     refined by a parabola through three samples), St = D f / Ubar with f
     from the mean spacing of the lift's maxima.
@@ -38,7 +40,11 @@ run to --json, writes the force history to --history (CSV).
 
 usage: dfg_cylinder.py [--semquad PATH] (--mesh-args "..." | --msh FILE)
                        [--dt DT] [--t-end T] [--dt-spinup DT --t-spinup T]
-                       [--window W] [--json OUT] [--history CSV] [--name NAME]"""
+                       [--window W] [--save NPZ] [--restart NPZ] [--json OUT]
+                       [--history CSV] [--name NAME]
+
+The time step matters: on the 2255-quad mesh max c_L is 1.152 at dt = 0.01,
+1.095 at 0.005 (docs/benchmarks.md), so measure at dt <= 0.0025."""
 import argparse
 import json
 import logging
@@ -283,6 +289,46 @@ def schedule(a):
     return out
 
 
+def load_mesh(a, row):
+    """The run's mesh (semquad's, or --msh), its figures added to row."""
+    with tempfile.TemporaryDirectory() as d:
+        if a.msh:
+            path, row["msh"] = a.msh, os.path.basename(a.msh)
+        else:
+            path, report = make_msh(a.semquad, shlex.split(a.mesh_args), d)
+            row["mesh_args"] = a.mesh_args
+            row["semquad_commit"] = source_commit(ROOT)
+            row["worst_eta"] = report["mesh"]["quality"]["min"]
+            row["min_scaled_jacobian"] = report["mesh"]["min_scaled_jacobian"]
+            if a.keep_msh:
+                with open(path, "rb") as f, open(a.keep_msh, "wb") as g:
+                    g.write(f.read())
+        msh = read_quads(path)
+    row["quads"] = msh.topology.index_map(2).size_global
+    return msh
+
+
+def march(ch, a, t, out):
+    """Every phase of the schedule from time t; the (t, c_D, c_L) of each step."""
+    hist, t0 = [], time.perf_counter()
+    last = t0
+    for dt, t_end in schedule(a):
+        first = True
+        for _ in range(int(round((t_end - t) / dt))):
+            t += dt
+            ch.set_boundary(t, a.kick)
+            cd, cl = ch.step(dt, bdf2=not first)
+            first = False
+            hist.append((t, cd, cl))
+            if out:
+                out.write("%.6f,%.8f,%.8f\n" % hist[-1])
+                out.flush()
+            if time.perf_counter() - last > 30:
+                last = time.perf_counter()
+                print("dfg: t %.4f c_D %.5f c_L %+.5f (%.0f s)" % (t, cd, cl, last - t0), flush=True)
+    return hist
+
+
 def main():
     ap = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     ap.add_argument("--semquad", default=os.environ.get("SEMQUAD", os.path.join(ROOT, "build-release", "src",
@@ -296,6 +342,8 @@ def main():
     ap.add_argument("--t-spinup", type=float, default=0.0)
     ap.add_argument("--window", type=float, default=1.0, help="seconds at the end measured (default 1)")
     ap.add_argument("--kick", type=float, default=0.5, help="cylinder surface speed at t = 1.5 (default 0.5)")
+    ap.add_argument("--save", help="write the last two steps' solutions here (.npz) for --restart")
+    ap.add_argument("--restart", help="start from a --save file of the same mesh (a BDF1 step first)")
     ap.add_argument("--json", help="append the run's row (JSON, one line) here")
     ap.add_argument("--history", help="write t, c_D, c_L of every step here (CSV)")
     ap.add_argument("--name", default="")
@@ -304,45 +352,30 @@ def main():
     load0 = os.getloadavg()[0]
     t0 = time.perf_counter()
     row = {"name": a.name, "dt": a.dt, "t_end": a.t_end, "dt_spinup": a.dt_spinup, "t_spinup": a.t_spinup}
-    with tempfile.TemporaryDirectory() as d:
-        if a.msh:
-            path, row["msh"] = a.msh, os.path.basename(a.msh)
-        else:
-            path, report = make_msh(a.semquad, shlex.split(a.mesh_args), d)
-            row["mesh_args"] = a.mesh_args
-            row["semquad_commit"] = source_commit(ROOT)
-            row["worst_eta"] = report["mesh"]["quality"]["min"]
-            row["min_scaled_jacobian"] = report["mesh"]["min_scaled_jacobian"]
-            if a.keep_msh:
-                with open(path, "rb") as f, open(a.keep_msh, "wb") as g2:
-                    g2.write(f.read())
-        msh = read_quads(path)
-    row["quads"] = msh.topology.index_map(2).size_global
-    ch = Channel(msh)
+    ch = Channel(load_mesh(a, row))
     row["dofs"] = ch.ndofs
     print("dfg: %d quads, %d dofs" % (row["quads"], row["dofs"]), flush=True)
-    hist, t, last = [], 0.0, time.perf_counter()
-    for dt, t_end in schedule(a):
-        first = True
-        nsteps = int(round((t_end - t) / dt))
-        for _ in range(nsteps):
-            t += dt
-            ch.set_boundary(t, a.kick)
-            cd, cl = ch.step(dt, bdf2=not first and len(hist) > 0)
-            first = False
-            hist.append((t, cd, cl))
-            if time.perf_counter() - last > 30:
-                last = time.perf_counter()
-                print("dfg: t %.4f c_D %.5f c_L %+.5f (%.0f s)" % (t, cd, cl, last - t0), flush=True)
+    t = 0.0
+    if a.restart:
+        z = np.load(a.restart)
+        if len(z["w1"]) != len(ch.w1.x.array):
+            sys.exit("dfg_cylinder: %s is not of this mesh" % a.restart)
+        t, ch.w1.x.array[:], ch.w2.x.array[:] = float(z["t"]), z["w1"], z["w2"]
+        row["restart_t"] = t
+    # written as it goes, so a long run can be watched (and analysed if cut)
+    out = open(a.history, "w") if a.history else None
+    if out:
+        out.write("t,cd,cl\n")
+    hist = march(ch, a, t, out)
+    if out:
+        out.close()
+    if a.save:
+        np.savez(a.save, t=hist[-1][0], w1=ch.w1.x.array, w2=ch.w2.x.array)
     row["gmres_per_step"] = round(ch.iterations / max(1, len(hist)), 2)
     row["factorizations"] = ch.factorizations
     row.update(analyse(hist, a.window))
     row["seconds"] = round(time.perf_counter() - t0, 1)
     row["load"] = [round(load0, 2), round(os.getloadavg()[0], 2)]
-    if a.history:
-        with open(a.history, "w") as f:
-            f.write("t,cd,cl\n")
-            f.writelines("%.6f,%.8f,%.8f\n" % r for r in hist)
     line = json.dumps(row)
     print(line, flush=True)
     if a.json:
