@@ -56,12 +56,11 @@ import sys
 import tempfile
 import time
 
-import numpy as np
-
 # one thread each: BLAS threads fighting over a loaded machine's cores made a
-# step 5x slower (measured); before numpy/PETSc load their BLAS
+# step 5x slower (measured); set before numpy and PETSc load their BLAS
 os.environ.setdefault("OMP_NUM_THREADS", "1")
 os.environ.setdefault("OPENBLAS_NUM_THREADS", "1")
+import numpy as np  # noqa: E402
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 sys.path.insert(0, os.path.join(ROOT, "tests"))
 sys.path.insert(0, os.path.join(ROOT, "bench"))
@@ -81,19 +80,19 @@ logging.getLogger().setLevel(logging.WARNING)  # not FFCx's compiler lines
 
 L, H, XC, YC, D = 2.2, 0.41, 0.2, 0.2, 0.1
 NU, UM = 1e-3, 1.5
-# Schaefer & Turek 1996, table 4 (case 2D-2)
 # GMRES iterations above which the next step refactors its matrix
 REFACTOR_ITS = 6
 # Gauss points per direction exact to degree 6 (the convection term's
 # Q2 x Q2 x Q2, one derivative down, on the affine part of the map); UFL's
-# estimate on the curved Q2 map asked for far more and doubled assembly time
+# own estimate on the curved Q2 map asks for a far higher degree
 DX = ufl.dx(metadata={"quadrature_degree": 6})
+# Schaefer & Turek 1996, table 4 (case 2D-2)
 BOUNDS = {"cd_max": (3.22, 3.24), "cl_max": (0.99, 1.01), "st": (0.295, 0.305)}
 
 
 def make_msh(semquad, mesh_args, workdir):
     """The channel's STEP and `semquad mesh --order 2` on it; the MSH path and
-    the report's quad count."""
+    semquad's report."""
     step = os.path.join(workdir, "dfg.step")
     step_face(step, [[(0, 0), (L, 0), (L, H), (0, H)], ("circle", XC, YC, D / 2)], unit="m")
     msh, rep = os.path.join(workdir, "dfg.msh"), os.path.join(workdir, "dfg.json")
