@@ -9,9 +9,13 @@
 # converts to; t960 runs the package.  parallel (GNU parallel) runs batches
 # on one machine: scripts/mesh_parallel.sh, t906 (docs/scale-out.md).
 # zlib1g-dev compresses the compressed Nektar++ XML (--binary with xml).
+# `--bench` adds what only benchmarks use, not the build or the tests:
+# python3-dolfinx (DOLFINx 0.5.2 with PETSc, MPI and FFCx, about 170
+# packages), the Navier-Stokes solver of bench/dfg_cylinder.py.
 # Idempotent: quiet when everything is present; runs apt-get update only when
 # something is missing.
 set -eu
+BENCH_PKGS="python3-dolfinx"
 PKGS="meson ninja-build pkg-config gcc g++ \
 libocct-foundation-dev libocct-modeling-data-dev libocct-modeling-algorithms-dev \
 libocct-data-exchange-dev \
@@ -19,6 +23,11 @@ libcgal-dev libgmp-dev libmpfr-dev \
 libgsl-dev liblapacke-dev zlib1g-dev libopenblas-dev libopenblas-serial-dev libsuitesparse-dev \
 librsvg2-bin \
 python3-gmsh gmsh python3-numpy python3-meshio parallel"
+case "${1:-}" in
+    "") ;;
+    --bench) PKGS="$PKGS $BENCH_PKGS" ;;
+    *) echo "usage: bootstrap.sh [--bench]" >&2; exit 2 ;;
+esac
 missing=""
 for p in $PKGS; do
     if ! dpkg-query -W -f='${Status}' "$p" 2>/dev/null | grep -q "install ok installed"; then
