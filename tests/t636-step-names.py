@@ -19,7 +19,9 @@ holding a space and one 'NONE', the exporters' "no name") and each face
   - in the three-face domain the interfaces are no group (they are no
     boundary), the boundary curves keep their file names;
   - `--names` with `0 inlet` renames edge 0 and leaves the others' file names;
-  - the Nektar++ XML carries the names as composite NAMEs.
+  - the Nektar++ XML carries the names as composite NAMEs;
+  - in the three-face domain each face is a surface group named as the
+    file names the face (plate_N), in the MSH and the Nektar++ XML.
 usage: t636-step-names.py SEMQUAD DOMAIN_FACES_PY"""
 import math
 import os
@@ -84,6 +86,20 @@ def groups(msh):
     return out
 
 
+def surface_groups(msh):
+    """{name: (least x, largest x) of its elements' nodes} of the physical surfaces."""
+    gmsh.clear()
+    gmsh.open(msh)
+    out = {}
+    for dim, tag in gmsh.model.getPhysicalGroups(2):
+        xs = []
+        for ent in gmsh.model.getEntitiesForPhysicalGroup(dim, tag):
+            for _, _, en in zip(*gmsh.model.mesh.getElements(2, ent)):
+                xs += [gmsh.model.mesh.getNode(int(n))[0][0] for n in en]
+        out[gmsh.model.getPhysicalName(dim, tag)] = (min(xs), max(xs))
+    return out
+
+
 def distance(p, seg):
     (ax, ay), (bx, by) = seg[0][:2], seg[1][:2]
     dx, dy = bx - ax, by - ay
@@ -133,6 +149,25 @@ def check(label, step, segs, x_max, nbottom, tmp):
     r = run(["mesh", step, "--order", "3", "--size", "0.25", "-o", xml, "-q"])
     if r.returncode or 'NAME="left_wall"' not in open(xml).read():
         fails.append("%s: Nektar++ XML without the composite NAME left_wall" % label)
+    if nbottom > 1:  # a domain: each face's group named as the file names the face
+        r = run(["mesh", step, "--order", "3", "--size", "0.25", "-o", msh, "-q"])
+        s = surface_groups(msh)
+        print("%s: surface groups %s" % (label, s))
+        want = ["plate_%d" % k for k in range(nbottom)]
+        if sorted(s) != want:
+            fails.append("%s: surface groups %s, expected %s" % (label, sorted(s), want))
+        # each group is one face of the row ([0,1], [1,2.5], [2.5,3] in x,
+        # domain_faces.py): its nodes' x range that face's, to the
+        # resampling's round-off (1e-12 of the size)
+        spans = sorted(s.values())
+        faces = [(0.0, 1.0), (1.0, 2.5), (2.5, 3.0)]
+        if len(spans) != len(faces) or any(abs(a - c) > 1e-12 * x_max or abs(b - d) > 1e-12 * x_max
+                                           for (a, b), (c, d) in zip(spans, faces)):
+            fails.append("%s: surface groups span %s, not one face each" % (label, s))
+        text = open(xml).read()
+        for name in want:
+            if 'NAME="%s"> Q[' % name not in text:
+                fails.append("%s: Nektar++ XML without the face composite NAME %s" % (label, name))
 
 
 def main():

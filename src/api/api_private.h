@@ -99,8 +99,9 @@ sq_status sq_api_names_check(const sq_options *o, sq_error *err);
 sq_status sq_api_name_tags(sq_quad_mesh *m, const sq_options *o, sq_error *err);
 /* The names the CAD file gives m's curves (cad_face_edge_name): curve t
  * is edge t of cad[0] (curves NULL: one face), or, of a domain, curve c's
- * tag is edge curves[c].edge[0] of cad[curves[c].face[0]]. */
-sq_status sq_api_file_names(sq_quad_mesh *m, const cad_face *const *cad,
+ * tag is edge curves[c].edge[0] of cad[curves[c].face[0]]; and a domain's
+ * faces (cad_model_face_name of model's face region_face[r]). */
+sq_status sq_api_file_names(sq_quad_mesh *m, const cad_model *model, const cad_face *const *cad,
                             const sq_domain_curve *curves, int ncurves, sq_error *err);
 
 

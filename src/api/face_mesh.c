@@ -450,7 +450,7 @@ sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_
     SQ_TRY(sq_api_face_mesh(model, face, o, NULL, NULL, out, err));
     sq_options def;
     const cad_face *cad = (*out)->face.cad;
-    sq_status st = sq_api_file_names((*out)->q, &cad, NULL, 0, err);
+    sq_status st = sq_api_file_names((*out)->q, model->cad, &cad, NULL, 0, err);
     if (st == SQ_OK) st = sq_api_name_tags((*out)->q, sq_api_options(o, &def), err);
     if (st != SQ_OK) sq_mesh_free(out);
     return st;

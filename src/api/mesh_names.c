@@ -1,6 +1,7 @@
 /* semquad public API: boundary names (the CAD file's, then
  * sq_options.names over them, docs/formats.md "Named boundaries") given to
- * the mesh's boundary curves, which the writers turn into group names. */
+ * the mesh's boundary curves, and the file's face names to a domain's
+ * faces, which the writers turn into group names. */
 #include "api_private.h"
 
 #include <math.h>
@@ -72,9 +73,29 @@ static sq_status name_tag(sq_quad_mesh *m, int t, const char *name, sq_error *er
     return SQ_OK;
 }
 
-sq_status sq_api_file_names(sq_quad_mesh *m, const cad_face *const *cad,
+/* The faces of a domain named as the file names them; a name an earlier
+ * face took gets "_<face number>" (each face is its own group). */
+static sq_status name_regions(sq_quad_mesh *m, const cad_model *model, sq_error *err)
+{
+    for (int r = 0; r < m->nregions; r++) {
+        const char *name = cad_model_face_name(model, m->region_face[r]);
+        if (!name) continue;
+        if (!m->region_name && !(m->region_name = calloc((size_t)m->nregions, sizeof *m->region_name)))
+            return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        int taken = 0;
+        for (int u = 0; u < r && !taken; u++) taken = m->region_name[u] && !strcmp(m->region_name[u], name);
+        size_t n = strlen(name) + 16;
+        if (!(m->region_name[r] = malloc(n))) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        if (taken) snprintf(m->region_name[r], n, "%s_%d", name, m->region_face[r]);
+        else snprintf(m->region_name[r], n, "%s", name);
+    }
+    return SQ_OK;
+}
+
+sq_status sq_api_file_names(sq_quad_mesh *m, const cad_model *model, const cad_face *const *cad,
                             const sq_domain_curve *curves, int ncurves, sq_error *err)
 {
+    SQ_TRY(name_regions(m, model, err));
     for (int t = 0; !curves && t < m->ntags; t++) {
         const char *name = cad_face_edge_name(cad[0], t);
         if (name) SQ_TRY(name_tag(m, t, name, err));

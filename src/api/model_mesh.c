@@ -281,7 +281,7 @@ static sq_status mesh_domain(const sq_model *m, const int *faces, int n, const s
     if (st == SQ_OK && !h->q)
         st = split_domain(dm, &d, &f, &mo, faces, os.size, &per, road, &rounds, &h->q, err);
     if (st == SQ_OK && per.npairs) st = pairs_counted(&per, h->q, o, err);
-    if (st == SQ_OK) st = sq_api_file_names(h->q, f.cad, d.curves, d.ncurves, err);
+    if (st == SQ_OK) st = sq_api_file_names(h->q, m->cad, f.cad, d.curves, d.ncurves, err);
     if (st == SQ_OK) st = keep_domain(h, &d, &f, road, rounds, err);
     sq_periodic_free(&per);
     sq_domain_free(&ds);

@@ -27,9 +27,11 @@ static void print_groups(FILE *fp, const sq_api_domain *d, const sq_quad_mesh *m
                 cv->edge[0]);
         first = 0;
     }
-    for (int k = 0; k < d->nfaces; k++)
-        fprintf(fp, ",\n    {\"dim\": 2, \"tag\": %d, \"name\": \"face_%d\", \"face\": %d}",
-                d->ntags + 1 + k, d->face[k], d->face[k]);
+    for (int k = 0; k < d->nfaces; k++) {
+        char buf[32];
+        fprintf(fp, ",\n    {\"dim\": 2, \"tag\": %d, \"name\": \"%s\", \"face\": %d}",
+                d->ntags + 1 + k, sq_quad_mesh_region_name(m, k, buf, sizeof buf), d->face[k]);
+    }
     fputs("\n  ],\n", fp);
 }
 

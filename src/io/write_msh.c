@@ -49,7 +49,8 @@ static void put_int(msh_writer *w, int v) { fwrite(&v, sizeof v, 1, w->fp); }
 
 /* Physical names (text in both encodings): one group per boundary curve or
  * group of curves named alike (the physical tag of its least curve); one
- * surface, "domain", or one per face of a domain, "face_N" (docs/domains.md). */
+ * surface, "domain", or one per face of a domain, its name in the file or
+ * "face_N" (docs/domains.md). */
 static void physical_names(msh_writer *w)
 {
     const sq_quad_mesh *m = w->m;
@@ -62,7 +63,10 @@ static void physical_names(msh_writer *w)
             fprintf(w->fp, "1 %d \"%s\"\n", t + 1, sq_quad_mesh_tag_name(w->m0, t, buf, sizeof buf));
     }
     if (m->nregions == 0) fprintf(w->fp, "2 %d \"domain\"\n", nt + 1);
-    for (int r = 0; r < m->nregions; r++) fprintf(w->fp, "2 %d \"face_%d\"\n", nt + 1 + r, m->region_face[r]);
+    for (int r = 0; r < m->nregions; r++) {
+        char buf[32];
+        fprintf(w->fp, "2 %d \"%s\"\n", nt + 1 + r, sq_quad_mesh_region_name(w->m0, r, buf, sizeof buf));
+    }
     fputs("$EndPhysicalNames\n", w->fp);
 }
 

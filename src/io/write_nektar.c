@@ -303,7 +303,10 @@ static void composites(FILE *fp, const sq_quad_mesh *m, const int *edge_of, int 
         int n = 0;
         for (int q = 0; q < nq; q++)
             if (!m->region || m->region[q] == r) list[n++] = q;
-        fprintf(fp, "      <C ID=\"%d\"> Q[", m->region ? m->ntags + 1 + r : 0);
+        if (m->region_name && m->region_name[r])
+            fprintf(fp, "      <C ID=\"%d\" NAME=\"%s\"> Q[", m->ntags + 1 + r, m->region_name[r]);
+        else
+            fprintf(fp, "      <C ID=\"%d\"> Q[", m->region ? m->ntags + 1 + r : 0);
         write_ranges(fp, list, n);
         fputs("] </C>\n", fp);
     }

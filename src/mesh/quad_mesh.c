@@ -53,6 +53,7 @@ void sq_quad_mesh_free(sq_quad_mesh **mp)
     free(m->bnd_tag);
     for (int t = 0; m->tag_name && t < m->ntags; t++) free(m->tag_name[t]);
     free(m->tag_name);
+    sq_quad_mesh_free_region_names(m);
     free(m->region);
     free(m->region_face);
     sq_quad_mesh_free_periodic(m);
@@ -60,8 +61,16 @@ void sq_quad_mesh_free(sq_quad_mesh **mp)
     *mp = NULL;
 }
 
+void sq_quad_mesh_free_region_names(sq_quad_mesh *m)
+{
+    for (int r = 0; m->region_name && r < m->nregions; r++) free(m->region_name[r]);
+    free(m->region_name);
+    m->region_name = NULL;
+}
+
 sq_status sq_quad_mesh_set_regions(sq_quad_mesh *m, int nregions, sq_error *err)
 {
+    sq_quad_mesh_free_region_names(m);
     free(m->region);
     free(m->region_face);
     m->nregions = nregions;
@@ -346,6 +355,13 @@ int sq_quad_mesh_tag_group(const sq_quad_mesh *m, int t)
     for (int u = 0; m->tag_name && m->tag_name[t] && u < t; u++)
         if (m->tag_name[u] && !strcmp(m->tag_name[u], m->tag_name[t])) return u;
     return t;
+}
+
+const char *sq_quad_mesh_region_name(const sq_quad_mesh *m, int r, char *buf, size_t n)
+{
+    if (m->region_name && m->region_name[r]) return m->region_name[r];
+    snprintf(buf, n, "face_%d", m->region_face[r]);
+    return buf;
 }
 
 const char *sq_quad_mesh_tag_name(const sq_quad_mesh *m, int t, char *buf, size_t n)

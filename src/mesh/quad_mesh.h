@@ -44,10 +44,12 @@ typedef struct {
     char **tag_name;     /* ntags names (NULL: boundary_<tag>), or NULL: none named */
     /* faces of a domain (docs/domains.md): nregions > 0 faces, region[q]
      * the face (0..nregions-1) of quad q, region_face[r] that face's number
-     * in the CAD file; nregions = 0, both NULL: one face */
+     * in the CAD file, region_name[r] its name (NULL: face_<number>; the
+     * array NULL: none named); nregions = 0, all NULL: one face */
     int nregions;
     int *region;
     int *region_face;
+    char **region_name;
     /* periodic pairs (quad_periodic.c): nperiodic links; the identified
      * domain's Euler characteristic, the net index sum (4 - valence) its
      * interior vertices need by Gauss–Bonnet, and this mesh's irregular
@@ -76,10 +78,14 @@ int sq_sort_unique(int *a, int n);
  * tag with its name (t itself when unnamed), and its name, buf
  * ("boundary_<t>") when unnamed. */
 int sq_quad_mesh_tag_group(const sq_quad_mesh *m, int t);
+/* The name of face r of a domain: its name, or buf ("face_<number>"). */
+const char *sq_quad_mesh_region_name(const sq_quad_mesh *m, int r, char *buf, size_t n);
 const char *sq_quad_mesh_tag_name(const sq_quad_mesh *m, int t, char *buf, size_t n);
 
 /* Give m nregions regions (region[] and region_face[] allocated, zeroed). */
 sq_status sq_quad_mesh_set_regions(sq_quad_mesh *m, int nregions, sq_error *err);
+/* The regions' names freed (region_name NULL: every face face_<number>). */
+void sq_quad_mesh_free_region_names(sq_quad_mesh *m);
 
 sq_status sq_quad_mesh_create(int order, sq_node_kind nodes, int nnodes, int nquads, int nbnd,
                               sq_quad_mesh **out, sq_error *err);
