@@ -72,31 +72,18 @@ def name_step(src, dst, x_max):
     return segs
 
 
-def groups(msh):
-    """{name: [line elements' node coordinates]} of the physical curves."""
+def groups(msh, dim=1):
+    """{name: [its elements' node coordinates]} of the physical groups of
+    dimension dim (1: the curves, 2: the surfaces)."""
     gmsh.clear()
     gmsh.open(msh)
     out = {}
-    for dim, tag in gmsh.model.getPhysicalGroups(1):
+    for _, tag in gmsh.model.getPhysicalGroups(dim):
         name = gmsh.model.getPhysicalName(dim, tag)
         for ent in gmsh.model.getEntitiesForPhysicalGroup(dim, tag):
-            for _, _, en in zip(*gmsh.model.mesh.getElements(1, ent)):
+            for _, _, en in zip(*gmsh.model.mesh.getElements(dim, ent)):
                 for n in en:
                     out.setdefault(name, []).append(tuple(gmsh.model.mesh.getNode(int(n))[0][:2]))
-    return out
-
-
-def surface_groups(msh):
-    """{name: (least x, largest x) of its elements' nodes} of the physical surfaces."""
-    gmsh.clear()
-    gmsh.open(msh)
-    out = {}
-    for dim, tag in gmsh.model.getPhysicalGroups(2):
-        xs = []
-        for ent in gmsh.model.getEntitiesForPhysicalGroup(dim, tag):
-            for _, _, en in zip(*gmsh.model.mesh.getElements(2, ent)):
-                xs += [gmsh.model.mesh.getNode(int(n))[0][0] for n in en]
-        out[gmsh.model.getPhysicalName(dim, tag)] = (min(xs), max(xs))
     return out
 
 
@@ -135,6 +122,21 @@ def check(label, step, segs, x_max, nbottom, tmp):
         far = max(min(distance(p, sg) for sg in segs[name]) for p in g[name])
         if far > 1e-12 * x_max:
             fails.append("%s: group %s holds a node %.3g off its edges" % (label, name, far))
+    if nbottom > 1:  # a domain: each face's group named as the file names the face
+        s = {name: (min(p[0] for p in ps), max(p[0] for p in ps))
+             for name, ps in groups(msh, 2).items()}  # each face's x range
+        print("%s: surface groups %s" % (label, s))
+        plates = ["plate_%d" % k for k in range(nbottom)]
+        if sorted(s) != plates:
+            fails.append("%s: surface groups %s, expected %s" % (label, sorted(s), plates))
+        # each group is one face of the row ([0,1], [1,2.5], [2.5,3] in x,
+        # domain_faces.py): its nodes' x range that face's, to the
+        # resampling's round-off (1e-12 of the size)
+        spans = sorted(s.values())
+        faces = [(0.0, 1.0), (1.0, 2.5), (2.5, 3.0)]
+        if len(spans) != len(faces) or any(abs(a - c) > 1e-12 * x_max or abs(b - d) > 1e-12 * x_max
+                                           for (a, b), (c, d) in zip(spans, faces)):
+            fails.append("%s: surface groups span %s, not one face each" % (label, s))
     # --names over the file's: edge 0 renamed, the others keep theirs
     names_file = os.path.join(tmp, label + ".names")
     open(names_file, "w").write("0 inlet\n")
@@ -149,23 +151,9 @@ def check(label, step, segs, x_max, nbottom, tmp):
     r = run(["mesh", step, "--order", "3", "--size", "0.25", "-o", xml, "-q"])
     if r.returncode or 'NAME="left_wall"' not in open(xml).read():
         fails.append("%s: Nektar++ XML without the composite NAME left_wall" % label)
-    if nbottom > 1:  # a domain: each face's group named as the file names the face
-        r = run(["mesh", step, "--order", "3", "--size", "0.25", "-o", msh, "-q"])
-        s = surface_groups(msh)
-        print("%s: surface groups %s" % (label, s))
-        want = ["plate_%d" % k for k in range(nbottom)]
-        if sorted(s) != want:
-            fails.append("%s: surface groups %s, expected %s" % (label, sorted(s), want))
-        # each group is one face of the row ([0,1], [1,2.5], [2.5,3] in x,
-        # domain_faces.py): its nodes' x range that face's, to the
-        # resampling's round-off (1e-12 of the size)
-        spans = sorted(s.values())
-        faces = [(0.0, 1.0), (1.0, 2.5), (2.5, 3.0)]
-        if len(spans) != len(faces) or any(abs(a - c) > 1e-12 * x_max or abs(b - d) > 1e-12 * x_max
-                                           for (a, b), (c, d) in zip(spans, faces)):
-            fails.append("%s: surface groups span %s, not one face each" % (label, s))
+    if nbottom > 1:
         text = open(xml).read()
-        for name in want:
+        for name in plates:
             if 'NAME="%s"> Q[' % name not in text:
                 fails.append("%s: Nektar++ XML without the face composite NAME %s" % (label, name))
 

@@ -155,15 +155,15 @@ static sq_status split_chord(lay_repair *r, int p, sq_error *err)
     const sq_layout_patch *P = &L->patches[p];
     const int n = P->ncorners;
     double *mids = malloc(2 * (size_t)n * sizeof *mids), *mfrac = malloc((size_t)n * sizeof *mfrac);
-    int *medge = malloc((size_t)n * sizeof *medge), *at = malloc((size_t)n * sizeof *at), nring = 0;
+    int *medge = malloc((size_t)n * sizeof *medge), nring = 0;
     double *ring = NULL;
     lay_ring_cdt cdt = {0};
     allquad_chord c = {.k = -1, .len = HUGE_VAL};
-    sq_status st = mids && mfrac && medge && at ? SQ_OK
+    sq_status st = mids && mfrac && medge ? SQ_OK
                                                 : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     for (int j = 0; j < n && st == SQ_OK; j++)
         st = lay_side_point(r, P, j, 0.5, &medge[j], &mfrac[j], &mids[2 * j], err);
-    if (st == SQ_OK) st = lay_ring_with_points(L, P, mids, n, &ring, &nring, at, err);
+    if (st == SQ_OK) st = lay_ring_with_points(L, P, mids, n, &ring, &nring, err);
     for (int lev = 0; lev < CHORD_LEVELS && c.k < 0 && st == SQ_OK; lev++)
         st = best_chord(r, P, mids, medge, mfrac, ring, nring, NULL, lev, &c, err);
     if (st == SQ_OK && c.k < 0 && nring <= ALLQUAD_BENT_RING_MAX) {
@@ -183,7 +183,7 @@ static sq_status split_chord(lay_repair *r, int p, sq_error *err)
         if (v->kind == SQ_LNODE_SINGULAR) L->sing[v->id].valence++;
         st = lay_add_spoke(r, start, a, c.path, c.np, c.edge, c.frac, c.mid, err);
     }
-    free(c.path), free(mids), free(mfrac), free(medge), free(at), free(ring);
+    free(c.path), free(mids), free(mfrac), free(medge), free(ring);
     lay_ring_cdt_free(&cdt);
     return st;
 }
@@ -225,11 +225,11 @@ static sq_status cut_across(lay_repair *r, int p, const int side[2], const doubl
 {
     sq_layout *L = r->L;
     const sq_layout_patch *P = &L->patches[p];
-    int edge[2], at[2], nring = 0, np = 0;
+    int edge[2], nring = 0, np = 0;
     double frac[2], pt[4], *ring = NULL, *path = NULL;
     for (int k = 0; k < 2; k++)
         SQ_TRY(lay_side_point(r, P, side[k], t[k], &edge[k], &frac[k], &pt[2 * k], err));
-    SQ_TRY(lay_ring_with_points(L, P, pt, 2, &ring, &nring, at, err));
+    SQ_TRY(lay_ring_with_points(L, P, pt, 2, &ring, &nring, err));
     sq_status st = SQ_OK;
     if (!chord_inside(ring, nring, &pt[0], &pt[2], 1e3 * r->tol)) {
         lay_ring_cdt cdt = {0};

@@ -50,7 +50,7 @@ static int paths_cross(const double *a, int na, const double *b, int nb, double 
 }
 
 sq_status lay_ring_with_points(const sq_layout *L, const sq_layout_patch *P, const double *sp,
-                                  int n, double **ring, int *nring, int *at, sq_error *err)
+                               int n, double **ring, int *nring, sq_error *err)
 {
     int m;
     double *poly = lay_cycle_polygon(L, P->half, P->cycle_start[1], &m);
@@ -88,7 +88,7 @@ sq_status lay_ring_with_points(const sq_layout *L, const sq_layout_patch *P, con
             last = par[pick];
             out[2 * c] = sp[2 * pick];
             out[2 * c + 1] = sp[2 * pick + 1];
-            at[pick] = c++;
+            c++;
         }
     }
     free(poly), free(seg), free(par);
@@ -336,16 +336,16 @@ sq_status lay_split_centre(lay_repair *r, int p, int bent, sq_error *err)
     const int n = P->ncorners;
     if (n < 2 || P->ncycles != 1) return SQ_FAIL(err, SQ_ERR_LAYOUT, "patch %d: no sides", p);
     double *mid = malloc(2 * (size_t)n * sizeof *mid), *mfrac = malloc((size_t)n * sizeof *mfrac);
-    int *medge = malloc((size_t)n * sizeof *medge), *at = malloc((size_t)n * sizeof *at);
+    int *medge = malloc((size_t)n * sizeof *medge);
     double **path = calloc((size_t)n, sizeof *path), *ring = NULL;
     int *np = calloc((size_t)n, sizeof *np), nring = 0;
     lay_ring_cdt t = {0};
     sq_status st = SQ_OK;
-    if (!mid || !mfrac || !medge || !at || !path || !np)
+    if (!mid || !mfrac || !medge || !path || !np)
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     for (int k = 0; k < n && st == SQ_OK; k++)
         st = lay_side_point(r, P, k, 0.5, &medge[k], &mfrac[k], &mid[2 * k], err);
-    if (st == SQ_OK) st = lay_ring_with_points(L, P, mid, n, &ring, &nring, at, err);
+    if (st == SQ_OK) st = lay_ring_with_points(L, P, mid, n, &ring, &nring, err);
     double cen[2] = {0, 0};
     int straight = st == SQ_OK && lay_patch_centroid(L, P, cen) &&
                    lay_poly_contains(ring, nring, cen);
@@ -382,7 +382,7 @@ sq_status lay_split_centre(lay_repair *r, int p, int bent, sq_error *err)
         if (v->kind == SQ_LNODE_CORNER && L->vertex_quads[v->id] == 0) L->vertex_quads[v->id] = 1;
     }
     for (int k = 0; path && k < n; k++) free(path[k]);
-    free(path), free(np), free(mid), free(mfrac), free(medge), free(at), free(ring);
+    free(path), free(np), free(mid), free(mfrac), free(medge), free(ring);
     lay_ring_cdt_free(&t);
     return st;
 }

@@ -124,10 +124,9 @@ sq_status lay_add_spoke(lay_repair *r, sq_sep_end start, const double cen[2], co
 /* ---- repair_nsplit.c ---- */
 
 /* The patch's outer ring with the n side points sp[n] inserted (each on the
- * ring segment nearest it, in walking order); at[k]: the index of side
- * point k in *ring (malloc'ed, *nring points). */
+ * ring segment nearest it, in walking order; malloc'ed, *nring points). */
 sq_status lay_ring_with_points(const sq_layout *L, const sq_layout_patch *P, const double *sp,
-                               int n, double **ring, int *nring, int *at, sq_error *err);
+                               int n, double **ring, int *nring, sq_error *err);
 
 /* A patch ring's constrained Delaunay triangulation, along which spokes and
  * chords bend where straight ones would leave the patch. */

@@ -41,6 +41,14 @@ sq_status sq_quad_mesh_create(int order, sq_node_kind nodes, int nnodes, int nqu
     return SQ_OK;
 }
 
+/* The regions' names freed (region_name NULL: every face face_<number>). */
+static void free_region_names(sq_quad_mesh *m)
+{
+    for (int r = 0; m->region_name && r < m->nregions; r++) free(m->region_name[r]);
+    free(m->region_name);
+    m->region_name = NULL;
+}
+
 void sq_quad_mesh_free(sq_quad_mesh **mp)
 {
     if (!mp || !*mp) return;
@@ -53,7 +61,7 @@ void sq_quad_mesh_free(sq_quad_mesh **mp)
     free(m->bnd_tag);
     for (int t = 0; m->tag_name && t < m->ntags; t++) free(m->tag_name[t]);
     free(m->tag_name);
-    sq_quad_mesh_free_region_names(m);
+    free_region_names(m);
     free(m->region);
     free(m->region_face);
     sq_quad_mesh_free_periodic(m);
@@ -61,16 +69,9 @@ void sq_quad_mesh_free(sq_quad_mesh **mp)
     *mp = NULL;
 }
 
-void sq_quad_mesh_free_region_names(sq_quad_mesh *m)
-{
-    for (int r = 0; m->region_name && r < m->nregions; r++) free(m->region_name[r]);
-    free(m->region_name);
-    m->region_name = NULL;
-}
-
 sq_status sq_quad_mesh_set_regions(sq_quad_mesh *m, int nregions, sq_error *err)
 {
-    sq_quad_mesh_free_region_names(m);
+    free_region_names(m);
     free(m->region);
     free(m->region_face);
     m->nregions = nregions;

@@ -84,8 +84,6 @@ const char *sq_quad_mesh_tag_name(const sq_quad_mesh *m, int t, char *buf, size_
 
 /* Give m nregions regions (region[] and region_face[] allocated, zeroed). */
 sq_status sq_quad_mesh_set_regions(sq_quad_mesh *m, int nregions, sq_error *err);
-/* The regions' names freed (region_name NULL: every face face_<number>). */
-void sq_quad_mesh_free_region_names(sq_quad_mesh *m);
 
 sq_status sq_quad_mesh_create(int order, sq_node_kind nodes, int nnodes, int nquads, int nbnd,
                               sq_quad_mesh **out, sq_error *err);
