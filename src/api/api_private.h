@@ -116,11 +116,12 @@ void sq_api_periodic_log(const sq_options *o, const sq_periodic *per);
 void sq_api_periodic_log_identified(const sq_options *o, const sq_quad_mesh *q, const char *road);
 /* sq_face_mesh with the vertices on the face's edges where held_edges[e]
  * is 1 held where they are placed (a domain's shared curves; NULL: none),
- * and on the layout road at least min_chords[e] chords on edge e (NULL:
- * none; quad_mesher.h). */
+ * on the layout road at least min_chords[e] chords on edge e and its
+ * vertices on edge e slid onto edge_points[e] where n > 0 (NULL: none;
+ * quad_mesher.h). */
 sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
-                           const int *held_edges, const int *min_chords, sq_mesh **out,
-                           sq_error *err);
+                           const int *held_edges, const int *min_chords,
+                           const sq_edge_points *edge_points, sq_mesh **out, sq_error *err);
 
 /* Appended to a cusp's refusal (sq_face_check_cusps): why healing left
  * it, the option that would blunt it. */

@@ -447,7 +447,7 @@ sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err)
 sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_mesh **out,
                        sq_error *err)
 {
-    SQ_TRY(sq_api_face_mesh(model, face, o, NULL, NULL, out, err));
+    SQ_TRY(sq_api_face_mesh(model, face, o, NULL, NULL, NULL, out, err));
     sq_options def;
     const cad_face *cad = (*out)->face.cad;
     sq_status st = sq_api_file_names((*out)->q, model->cad, &cad, NULL, 0, err);
@@ -527,8 +527,8 @@ void sq_api_periodic_log_identified(const sq_options *o, const sq_quad_mesh *q, 
 }
 
 sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
-                           const int *held_edges, const int *min_chords, sq_mesh **out,
-                           sq_error *err)
+                           const int *held_edges, const int *min_chords,
+                           const sq_edge_points *edge_points, sq_mesh **out, sq_error *err)
 {
     *out = NULL;
     sq_options def;
@@ -541,6 +541,7 @@ sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
     SQ_TRY(sq_api_mesher_options(o, &mo, err));
     mo.held_edges = held_edges;
     mo.min_chords = min_chords;
+    mo.edge_points = edge_points;
     sq_mesh *h = calloc(1, sizeof *h);
     if (!h || !(h->t_write = calloc(1, sizeof *h->t_write))) {
         free(h);

@@ -78,31 +78,64 @@ static sq_status faces_load(const sq_model *m, const int *faces, int n, const sq
     return SQ_OK;
 }
 
-/* The faces with (shares 1) or without (0) a shared curve, each by its
- * own roads (as o says) at the domain's size, the vertices on its shared
- * curves held, at least minc[k][e] chords on its edges (minc NULL: none);
- * their meshes taken into f->q. */
+/* Face k by its own roads (as o says) at the domain's size, the vertices
+ * on its shared curves held, at least minc[k][e] chords on its edges
+ * (minc NULL: none), its vertices on edge e slid onto ep[e] where given
+ * (ep NULL: none); its mesh into f->q[k]. */
+static sq_status mesh_one(const sq_model *m, const sq_domain *d, faces_open *f, int k,
+                          const sq_options *o, int *const *minc, const sq_edge_points *ep,
+                          const char **road, sq_error *err)
+{
+    int shares = sq_domain_face_shares(d, k), ne = cad_face_num_edges(f->cad[k]);
+    int *held = calloc((size_t)ne + 1, sizeof(int));
+    if (!held) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int e = 0; e < ne; e++) held[e] = d->curves[d->curve_of[k][e]].face[1] >= 0;
+    sq_mesh *h = NULL;
+    sq_status st = sq_api_face_mesh(m, f->face[k].index, o, shares ? held : NULL,
+                                    minc ? minc[k] : NULL, ep, &h, err);
+    free(held);
+    if (st != SQ_OK) return st;
+    road[k] = !strcmp(h->road.name, "split") ? "split" : "layout";
+    sq_quad_mesh_free(&f->q[k]);
+    f->q[k] = h->q;
+    h->q = NULL;
+    sq_mesh_free(&h);
+    return SQ_OK;
+}
+
+/* The faces with (shares 1) or without (0) a shared curve, each by
+ * mesh_one with no points to slide onto. */
 static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
                            const sq_options *o, int shares, int *const *minc, const char **road,
                            sq_error *err)
 {
-    for (int k = 0; k < f->n; k++) {
-        if (sq_domain_face_shares(d, k) != shares) continue;
-        int ne = cad_face_num_edges(f->cad[k]);
-        int *held = calloc((size_t)ne + 1, sizeof(int));
-        if (!held) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-        for (int e = 0; e < ne; e++) held[e] = d->curves[d->curve_of[k][e]].face[1] >= 0;
-        sq_mesh *h = NULL;
-        sq_status st = sq_api_face_mesh(m, f->face[k].index, o, shares ? held : NULL,
-                                        minc ? minc[k] : NULL, &h, err);
-        free(held);
-        if (st != SQ_OK) return st;
-        road[k] = !strcmp(h->road.name, "split") ? "split" : "layout";
-        f->q[k] = h->q;
-        h->q = NULL;
-        sq_mesh_free(&h);
-    }
+    for (int k = 0; k < f->n; k++)
+        if (sq_domain_face_shares(d, k) == shares)
+            SQ_TRY(mesh_one(m, d, f, k, o, minc, NULL, road, err));
     return SQ_OK;
+}
+
+/* Where the faces' layouts put their corners on a shared curve at places
+ * of their own (each face's own field: a disc and the square around it),
+ * the counts agree but the vertices do not meet: each face after the
+ * first is meshed again, at the same counts, with its vertices there slid
+ * onto those of the face before it (docs/domains.md). */
+static sq_status slide_faces(const sq_model *m, const sq_domain *dm, faces_open *f,
+                             const sq_options *o, int *const *minc, const char **road,
+                             sq_error *err)
+{
+    sq_status st = SQ_OK;
+    for (int k = 1; k < f->n && st == SQ_OK; k++) {
+        if (!sq_domain_face_shares(dm, k)) continue;
+        int ne = cad_face_num_edges(f->cad[k]), any = 0;
+        sq_edge_points *ep = calloc((size_t)ne + 1, sizeof *ep);
+        if (!ep) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        st = sq_domain_layout_points(dm, k, f->q, ep, &any, err);
+        if (st == SQ_OK && any) st = mesh_one(m, dm, f, k, o, minc, ep, road, err);
+        sq_domain_layout_points_free(ep, ne);
+        free(ep);
+    }
+    return st;
 }
 
 /* Layout-road rounds of one quantization over the faces: a curve shared
@@ -165,7 +198,10 @@ static sq_status try_layouts(const sq_model *m, const sq_domain *dm, const sq_do
     if (st == SQ_OK && changed)
         st = SQ_FAIL(err, SQ_ERR_LAYOUT, "the faces' chord counts on a shared curve differ after "
                      "%d rounds (a layout splits it at corners of its own)", r);
-    if (st == SQ_OK) st = sq_domain_merge(d, f->q, faces, o->size, merged, err);
+    if (st == SQ_OK && sq_domain_merge(d, f->q, faces, o->size, merged, err) != SQ_OK) {
+        st = slide_faces(m, dm, f, &ol, minc, road, err);
+        if (st == SQ_OK) st = sq_domain_merge(d, f->q, faces, o->size, merged, err);
+    }
     if (st == SQ_OK && per->npairs)
         st = sq_periodic_link(per, *merged, o->size, SQ_PERIODIC_NODE_REL_TOL, err);
     for (int k = 0; minc && k < f->n; k++) free(minc[k]);
@@ -199,6 +235,48 @@ static sq_status split_domain(const sq_domain *dm, const sq_domain *d, faces_ope
         if (sq_domain_face_shares(dm, k)) road[k] = "split";
     SQ_TRY(sq_domain_merge(d, f->q, faces, size, q, err));
     return per->npairs ? sq_periodic_link(per, *q, size, SQ_PERIODIC_NODE_REL_TOL, err) : SQ_OK;
+}
+
+/* The layout road's merged mesh below the quality floor (a corner slid
+ * along a shared curve squeezes a quad at a coarse size): the split road
+ * is tried and the mesh whose worst scaled Jacobian is the larger kept,
+ * the layout road's on a tie or when the split road fails, as for one
+ * face (face_mesh.c). */
+static sq_status floor_domain(const sq_domain *dm, const sq_domain *d, faces_open *f,
+                              const sq_mesher_options *mo, const int *faces, const sq_options *o,
+                              const sq_periodic *per, const char **road, int *rounds,
+                              sq_quad_mesh **q, sq_error *err)
+{
+    sq_quad_quality lq, sq;
+    SQ_TRY(sq_quad_mesh_quality(*q, NULL, NULL, mo->threads, &lq, err));
+    if (lq.min_scaled_jacobian >= o->min_quality) return SQ_OK;
+    sq_api_log(o, SQ_LOG_NOTE, "the layout road's worst quad has scaled Jacobian %.3g < "
+               "--min-quality %g; trying the split road", lq.min_scaled_jacobian, o->min_quality);
+    const char **kept = malloc(sizeof *kept * ((size_t)f->n + 1));
+    if (!kept) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    memcpy(kept, road, sizeof *kept * (size_t)f->n);
+    for (int k = 0; k < f->n; k++)
+        if (sq_domain_face_shares(dm, k)) sq_quad_mesh_free(&f->q[k]);
+    sq_quad_mesh *split = NULL;
+    sq_error e2;
+    sq_error_clear(&e2);
+    int r2 = 0;
+    sq_status s2 = split_domain(dm, d, f, mo, faces, mo->size, per, road, &r2, &split, &e2);
+    if (s2 == SQ_OK) s2 = sq_quad_mesh_quality(split, NULL, NULL, mo->threads, &sq, &e2);
+    if (s2 == SQ_OK && sq.min_scaled_jacobian > lq.min_scaled_jacobian) {
+        sq_api_log(o, SQ_LOG_NOTE, "kept the split road (worst scaled Jacobian %.3g > %.3g)",
+                   sq.min_scaled_jacobian, lq.min_scaled_jacobian);
+        sq_quad_mesh_free(q);
+        *q = split;
+        *rounds = r2;
+    } else {
+        sq_api_log(o, SQ_LOG_NOTE, "kept the layout road (the split road %s)",
+                   s2 == SQ_OK ? "is no better" : e2.msg);
+        sq_quad_mesh_free(&split);
+        memcpy(road, kept, sizeof *kept * (size_t)f->n);
+    }
+    free(kept);
+    return SQ_OK;
 }
 
 /* The identified domain's Gauss–Bonnet count on q, noted. */
@@ -278,6 +356,8 @@ static sq_status mesh_domain(const sq_model *m, const int *faces, int n, const s
                                        "the faces sharing curves%s take the split road", e2.msg,
                        per.npairs ? " or periodic pairs" : "");
     }
+    if (st == SQ_OK && h->q && dm->ninterfaces && want == SQ_API_ROAD_AUTO && o->min_quality > 0.0)
+        st = floor_domain(dm, &d, &f, &mo, faces, o, &per, road, &rounds, &h->q, err);
     if (st == SQ_OK && !h->q)
         st = split_domain(dm, &d, &f, &mo, faces, os.size, &per, road, &rounds, &h->q, err);
     if (st == SQ_OK && per.npairs) st = pairs_counted(&per, h->q, o, err);

@@ -57,6 +57,17 @@ int sq_domain_face_shares(const sq_domain *d, int f);
 sq_status sq_domain_mesh_split(const sq_domain *d, const sq_mesher_options *mo, sq_quad_mesh **out,
                                int *rounds, sq_error *err);
 
+/* The layout road over the faces (docs/domains.md): face f's points
+ * ep[e] (per edge of f, as sq_mesher_options.edge_points takes them: 0,
+ * then the interior points in f's sense; on a closed curve all its vertices) on each shared curve whose other
+ * face g comes before f, from its mesh q[g] (in g's frame, tags g's
+ * edges): the arc lengths of g's vertices there, so f's vertices slide
+ * onto them and the two meshes meet; n 0 on the other edges.  *any 1 if
+ * some edge has points.  Free with sq_domain_layout_points_free. */
+sq_status sq_domain_layout_points(const sq_domain *d, int f, sq_quad_mesh *const *q,
+                                  sq_edge_points *ep, int *any, sq_error *err);
+void sq_domain_layout_points_free(sq_edge_points *ep, int ne);
+
 /* Face f's frame into face 0's: x0 = A0 x + A1 y + A2, y0 = A3 x + A4 y +
  * A5; *flip when its normal is face 0's reversed (its boundary then runs
  * clockwise in face 0's frame). */

@@ -1,6 +1,8 @@
-/* semquad — the split road over a domain's faces with one discretization
- * of every interface (domain.h, designs 2 and 3). */
+/* semquad — one discretization of every interface of a domain: the split
+ * road's rounds over the faces (domain.h, designs 2 and 3) and the points
+ * the layout road slides a face's vertices onto. */
 #include "domain.h"
+#include "quad_edges.h"
 #include "quad_split.h"
 
 #include <math.h>
@@ -205,4 +207,61 @@ sq_status sq_domain_mesh_split(const sq_domain *d, const sq_mesher_options *mo, 
             if (sq_domain_face_shares(d, f)) sq_quad_mesh_free(&out[f]);
     work_free(d, &w);
     return st;
+}
+
+/* Face g's vertices on its edge eg (corners of its boundary sides there)
+ * into a, as arc lengths on face f's edge e across (the same curve, both
+ * senses). */
+static sq_status vertices_across(const sq_domain *d, const sq_quad_mesh *q, int g, int eg, int f,
+                                 int e, int reversed, arc_list *a, sq_error *err)
+{
+    double Lg = cad_face_edge_length(d->faces[g], eg), Lf = cad_face_edge_length(d->faces[f], e);
+    for (int b = 0; b < q->nbnd; b++) {
+        if (q->bnd_tag[b] != eg) continue;
+        for (int j = 0; j < 2; j++) {
+            int v = sq_quad_corner_node(q, q->bnd_quad[b], (q->bnd_side[b] + j) % 4);
+            double sg;
+            SQ_TRY(cad_face_edge_project(d->faces[g], eg, &q->xy[2 * (size_t)v], &sg, NULL, NULL,
+                                         err));
+            SQ_TRY(arc_add(a, (reversed ? Lg - sg : sg) * Lf / Lg, err));
+        }
+    }
+    return SQ_OK;
+}
+
+sq_status sq_domain_layout_points(const sq_domain *d, int f, sq_quad_mesh *const *q,
+                                  sq_edge_points *ep, int *any, sq_error *err)
+{
+    *any = 0;
+    int ne = cad_face_num_edges(d->faces[f]);
+    for (int e = 0; e < ne; e++) ep[e] = (sq_edge_points){0, NULL};
+    sq_status st = SQ_OK;
+    for (int e = 0; e < ne && st == SQ_OK; e++) {
+        const sq_domain_curve *cv = &d->curves[d->curve_of[f][e]];
+        int side = cv->face[0] == f && cv->edge[0] == e, g = cv->face[side], eg = cv->edge[side];
+        if (cv->face[1] < 0 || g >= f || !q[g]) continue;
+        double L = cad_face_edge_length(d->faces[f], e), tol = SAME_ARC * L;
+        /* a closed curve (a whole loop): its vertices wherever they are;
+         * else its start, then the interior vertices */
+        int closed = cad_face_loop_num_edges(d->faces[f], cad_face_edge_loop(d->faces[f], e)) == 1;
+        arc_list a = {0};
+        st = closed ? SQ_OK : arc_add(&a, 0.0, err);
+        if (st == SQ_OK) st = vertices_across(d, q[g], g, eg, f, e, cv->reversed, &a, err);
+        for (int k = 0; closed && k < a.n; k++)
+            if (a.s[k] > L - tol) a.s[k] = 0.0; /* the closing point is the start */
+        arc_unique(&a, tol);
+        while (!closed && a.n > 1 && a.s[a.n - 1] > L - tol) a.n--; /* the end: not a point */
+        ep[e] = (sq_edge_points){a.n, a.s};
+        *any = 1;
+    }
+    if (st != SQ_OK) sq_domain_layout_points_free(ep, ne);
+    return st;
+}
+
+void sq_domain_layout_points_free(sq_edge_points *ep, int ne)
+{
+    for (int e = 0; ep && e < ne; e++) {
+        free((double *)ep[e].s);
+        ep[e] = (sq_edge_points){0, NULL};
+    }
 }

@@ -276,6 +276,46 @@ static sq_status equal_totals(const sq_layout *L, const double *len, double size
     return st;
 }
 
+/* What a domain's faces ask of CAD edges the layout splits into pieces:
+ * the sum over such edges of min_chords beyond their totals (an edge of
+ * one piece takes its count directly, in qm_quantize). */
+static long min_deficit(const sq_layout *L, const int *minc, const int *n)
+{
+    long d = 0;
+    for (int e = 0; e < L->nedges; e++) {
+        int c = L->edges[e].cad_edge, first = c >= 0;
+        for (int f = 0; first && f < e; f++) first = L->edges[f].cad_edge != c;
+        long total = first ? cad_edge_count(L, c, n) : 0;
+        if (first && total < minc[c]) d += minc[c] - total;
+    }
+    return d;
+}
+
+/* Faces of a domain (docs/domains.md): a shared curve split by this
+ * face's layout into pieces still carries the count the face across asks
+ * (min_chords), so their meshes can meet on it.  While some such curve
+ * falls short, its coarsest piece (the longest segments: the face across
+ * spaces its vertices evenly, so each piece's share of them follows its
+ * length) is raised by one and the quantization settled, the lowest edge
+ * index at a tie.  Counts only grow, so this ends. */
+static sq_status min_totals(const sq_layout *L, const double *len, double size,
+                            const double *need, const int *partner, const int *minc, int *n,
+                            sq_error *err)
+{
+    while (min_deficit(L, minc, n) > 0) {
+        int best = -1;
+        double coarsest = -1.0;
+        for (int e = 0; e < L->nedges; e++) {
+            int c = L->edges[e].cad_edge;
+            if (c < 0 || cad_edge_count(L, c, n) >= minc[c]) continue;
+            if (len[e] / n[e] > coarsest) coarsest = len[e] / n[e], best = e;
+        }
+        n[best]++;
+        SQ_TRY(settle(L, len, size, need, partner, n, err));
+    }
+    return SQ_OK;
+}
+
 /* Design 1: chord quantization. */
 sq_status qm_quantize(const sq_layout *L, const double *len, double size, const double *need,
                       const int *partner, const sq_mesher_options *o, int *n, sq_error *err)
@@ -287,5 +327,6 @@ sq_status qm_quantize(const sq_layout *L, const double *len, double size, const 
         if (whole && n[e] < o->min_chords[c]) n[e] = o->min_chords[c];
     }
     SQ_TRY(settle(L, len, size, need, partner, n, err));
+    if (o->min_chords) SQ_TRY(min_totals(L, len, size, need, partner, o->min_chords, n, err));
     return o->slid.npairs ? equal_totals(L, len, size, need, &o->slid, n, err) : SQ_OK;
 }

@@ -138,7 +138,7 @@ static sq_status coarse_quantization(const sq_layout *L, const double *elen, dou
     *levels = 0;
     double quads = qm_quantized_quads(L, nseg);
     if (!(opt->relax_max_quads > 0.0) || quads <= opt->relax_max_quads || opt->nbl > 0 ||
-        opt->held_edges || opt->periodic.npairs)
+        opt->held_edges || opt->periodic.npairs || opt->slid.npairs)
         return SQ_OK;
     while (quads > opt->relax_max_quads && *levels < RELAX_MAX_LEVELS) {
         ++*levels;
@@ -210,6 +210,7 @@ static sq_status mesh_layout(const cad_face *face, const sq_face_info *info, con
     qm_vmesh v = {0};
     if (st == SQ_OK) st = qm_assemble(L, face, opt, nseg, cum, &v, err);
     if (st == SQ_OK && opt->slid.npairs) st = qm_slide_periodic(face, opt, &v, err);
+    if (st == SQ_OK && opt->edge_points) st = qm_slide_shared(face, opt, &v, err);
     if (st == SQ_OK) st = finish(face, info, &v, opt, out, err);
     qm_vmesh_free(&v);
     if (st == SQ_OK) st = refine_levels(face, levels, opt, out, err);

@@ -68,7 +68,8 @@ typedef struct {
     sq_progress progress;
     /* faces of a domain (docs/domains.md), NULL for one face: per CAD edge
      * of the face, the split road's triangulation starts from these points
-     * (sq_tri_options.edge_points), and where held_edges[e] is 1 the
+     * (sq_tri_options.edge_points) and the layout road's vertices on the
+     * edge are slid onto them (n 0: an edge left as it is), and where held_edges[e] is 1 the
      * vertices on edge e stay where they are placed (smoothing and
      * relaxation move them on no face, so the faces sharing e agree) */
     const sq_edge_points *edge_points;

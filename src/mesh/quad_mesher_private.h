@@ -114,7 +114,7 @@ sq_status qm_assemble(const sq_layout *L, const cad_face *face, const sq_mesher_
                       const int *nseg, const double *cum, qm_vmesh *v, sq_error *err);
 void qm_vmesh_free(qm_vmesh *v);
 
-/* ---- quad_slide.c: route 1b of periodic pairs ---- */
+/* ---- quad_slide.c: vertices slid along curves ---- */
 
 /* The vertices of each pair of opt->slid on b set to the images of a's,
  * one to one in order of arc length (b at L - s the image of a at s): b's
@@ -122,6 +122,13 @@ void qm_vmesh_free(qm_vmesh *v);
  * (SQ_ERR_INTERNAL otherwise). */
 sq_status qm_slide_periodic(const cad_face *face, const sq_mesher_options *opt, qm_vmesh *v,
                             sq_error *err);
+/* Faces of a domain on the layout road: the vertices on each edge e with
+ * opt->edge_points[e].n > 0 set, in order of arc length, to those points
+ * (the face across put its vertices there), its layout corners sliding
+ * along e; on a closed edge (a whole loop) the points are all its
+ * vertices, matched in cyclic order.  SQ_ERR_LAYOUT if the counts differ. */
+sq_status qm_slide_shared(const cad_face *face, const sq_mesher_options *opt, qm_vmesh *v,
+                          sq_error *err);
 
 /* ---- quad_untangle.c ---- */
 
