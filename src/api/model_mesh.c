@@ -80,29 +80,39 @@ static sq_status faces_load(const sq_model *m, const int *faces, int n, const sq
 
 /* The faces with (shares 1) or without (0) a shared curve, each by its
  * own roads (as o says) at the domain's size, the vertices on its shared
- * curves held, at least minc[k][e] chords on its edges (minc NULL: none);
- * their meshes taken into f->q. */
+ * curves held, at least minc[k][e] chords on its edges (minc NULL: none),
+ * on threads (sq_api_faces_mesh); their meshes taken into f->q. */
 static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
                            const sq_options *o, int shares, int *const *minc, const char **road,
                            sq_error *err)
 {
-    for (int k = 0; k < f->n; k++) {
+    int n = 0, *sel = malloc(sizeof(int) * (size_t)f->n), *index = malloc(sizeof(int) * (size_t)f->n);
+    int **held = calloc((size_t)f->n, sizeof *held), **mc = calloc((size_t)f->n, sizeof *mc);
+    sq_mesh **h = calloc((size_t)f->n, sizeof *h);
+    sq_status st = sel && index && held && mc && h ? SQ_OK
+                                                   : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < f->n && st == SQ_OK; k++) {
         if (sq_domain_face_shares(d, k) != shares) continue;
         int ne = cad_face_num_edges(f->cad[k]);
-        int *held = calloc((size_t)ne + 1, sizeof(int));
-        if (!held) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-        for (int e = 0; e < ne; e++) held[e] = d->curves[d->curve_of[k][e]].face[1] >= 0;
-        sq_mesh *h = NULL;
-        sq_status st = sq_api_face_mesh(m, f->face[k].index, o, shares ? held : NULL,
-                                        minc ? minc[k] : NULL, &h, err);
-        free(held);
-        if (st != SQ_OK) return st;
-        road[k] = !strcmp(h->road.name, "split") ? "split" : "layout";
-        f->q[k] = h->q;
-        h->q = NULL;
-        sq_mesh_free(&h);
+        if (!(held[n] = calloc((size_t)ne + 1, sizeof(int)))) {
+            st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+            break;
+        }
+        for (int e = 0; e < ne; e++) held[n][e] = d->curves[d->curve_of[k][e]].face[1] >= 0;
+        mc[n] = minc ? minc[k] : NULL;
+        sel[n] = k, index[n++] = f->face[k].index;
     }
-    return SQ_OK;
+    if (st == SQ_OK) st = sq_api_faces_mesh(m, n, index, o, shares ? held : NULL, mc, h, err);
+    for (int i = 0; i < n && st == SQ_OK; i++) {
+        int k = sel[i];
+        road[k] = !strcmp(h[i]->road.name, "split") ? "split" : "layout";
+        f->q[k] = h[i]->q;
+        h[i]->q = NULL;
+    }
+    for (int i = 0; i < f->n && held; i++) free(held[i]);
+    for (int i = 0; i < f->n && h; i++) sq_mesh_free(&h[i]);
+    free(sel), free(index), free(held), free(mc), free(h);
+    return st;
 }
 
 /* Layout-road rounds of one quantization over the faces: a curve shared
