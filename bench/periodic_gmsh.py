@@ -9,11 +9,14 @@ of several faces sharing curves (the circle-square).
            pairs and their transforms from the report; without it for the
            --whole FILEs;
   Gmsh     Debian's python3-gmsh 4.8.4 in this process: gmsh.open(FILE)
-           (every face; faces sharing an OCCT edge share its mesh), for a
+           in the unit semquad reads it in (Geometry.OCCTargetUnit from
+           `semquad info --json`; every face, and faces sharing an OCCT
+           edge share its mesh), for a
            periodic FILE the same pairs set with gmsh.model.mesh.setPeriodic
            (curves found by their end points: Gmsh numbers curves its own
            way), Mesh.RecombineAll 1, Mesh.RecombinationAlgorithm 3 (Blossom
-           full-quad), Mesh.MeshSizeMax = H, General.NumThreads 1,
+           full-quad), Mesh.CrossFieldClosestPoint 0, Mesh.MeshSizeMax = H,
+           General.NumThreads 1,
            Mesh.MeshSizeFactor calibrated (a few untimed runs) until Gmsh's
            quads are within 15 % of semquad's; Mesh.Algorithm 6
            (Frontal-Delaunay; 8, Frontal-Delaunay for quads, and 5 crash in
@@ -92,11 +95,19 @@ def gmsh_pairs(pairs):
     return [(s, m, aff) for s, m in links]
 
 
-def gmsh_mesh(step, pairs, algorithm, hmax, factor, out):
+def file_unit(sq, step):
+    """The unit semquad reads the file in (`semquad info --json`), as
+    Gmsh's Geometry.OCCTargetUnit: both mesh in the same lengths."""
+    info = json.loads(subprocess.run([sq, "info", step, "--json"], check=True,
+                                     capture_output=True, text=True).stdout)
+    return info["unit"].upper()
+
+
+def gmsh_mesh(step, unit, pairs, algorithm, hmax, factor, out):
     gmsh.initialize(["gmsh", "-v", "0"])
     gmsh.option.setNumber("General.Terminal", 0)
     gmsh.option.setNumber("General.NumThreads", 1)
-    gmsh.option.setString("Geometry.OCCTargetUnit", "M")  # as semquad: the file's metres
+    gmsh.option.setString("Geometry.OCCTargetUnit", unit)
     t0 = time.perf_counter()
     gmsh.open(step)
     links = gmsh_pairs(pairs) if pairs else []
@@ -105,7 +116,7 @@ def gmsh_mesh(step, pairs, algorithm, hmax, factor, out):
     for k, v in (("Mesh.Algorithm", algorithm), ("Mesh.RecombineAll", 1),
                  ("Mesh.RecombinationAlgorithm", 3), ("Mesh.MeshSizeMax", hmax),
                  ("Mesh.MeshSizeFactor", factor), ("Mesh.ElementOrder", 1),
-                 ("Mesh.MshFileVersion", 4.1)):
+                 ("Mesh.MshFileVersion", 4.1), ("Mesh.CrossFieldClosestPoint", 0)):
         gmsh.option.setNumber(k, v)
     gmsh.model.mesh.generate(2)
     gmsh.write(out)
@@ -114,19 +125,19 @@ def gmsh_mesh(step, pairs, algorithm, hmax, factor, out):
     return t, len(links)
 
 
-def gmsh_row(step, pairs, algorithm, hmax, quads, out, runs):
+def gmsh_row(step, unit, pairs, algorithm, hmax, quads, out, runs):
     """Gmsh's size factor calibrated (untimed) to semquad's quad count, then
     runs timed: (factor, its stats, median time, pairs linked)."""
     factor = 1.0
     for _ in range(8):
-        gmsh_mesh(step, pairs, algorithm, hmax, factor, out)
+        gmsh_mesh(step, unit, pairs, algorithm, hmax, factor, out)
         ratio = stats(out)["quads"] / quads
         if abs(ratio - 1) < 0.15:
             break
         factor *= math.sqrt(ratio)
     times, nlinks = [], 0
     for _ in range(runs):
-        t, nlinks = gmsh_mesh(step, pairs, algorithm, hmax, factor, out)
+        t, nlinks = gmsh_mesh(step, unit, pairs, algorithm, hmax, factor, out)
         times.append(t)
     return factor, stats(out), statistics.median(times), nlinks
 
@@ -172,8 +183,10 @@ def rows_of(a, step, periodic, tmp):
     rows = [(case, "semquad --threads %d (%s road)" % (a.threads, ", ".join(roads)), sq, t_sq,
              periodic_gap(s_msh) if periodic else None, len(pairs))]
     hmax = a.size or math.sqrt(rep["mesh"]["area"] / rep["mesh"]["quads"])
+    unit = file_unit(a.semquad, step)
     for alg in (6,) if periodic else (8, 6):
-        factor, gm, t, nlinks = gmsh_row(step, pairs, alg, hmax, sq["quads"], g_msh, a.runs)
+        factor, gm, t, nlinks = gmsh_row(step, unit, pairs, alg, hmax, sq["quads"], g_msh,
+                                         a.runs)
         rows.append((case, "Gmsh 4.8.4 %s%s, f = %.2f" % (
             ALGORITHM[alg], " setPeriodic" if periodic else "", factor), gm, t,
             periodic_gap(g_msh) if periodic else None, nlinks))
