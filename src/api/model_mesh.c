@@ -86,10 +86,11 @@ static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
                            const sq_options *o, int shares, int *const *minc, const char **road,
                            sq_error *err)
 {
-    int n = 0, *sel = malloc(sizeof(int) * (size_t)f->n), *index = malloc(sizeof(int) * (size_t)f->n);
+    int n = 0, *sel = calloc((size_t)f->n, sizeof(int));
+    int *number = calloc((size_t)f->n, sizeof(int)); /* sel's CAD face numbers */
     int **held = calloc((size_t)f->n, sizeof *held), **mc = calloc((size_t)f->n, sizeof *mc);
     sq_mesh **h = calloc((size_t)f->n, sizeof *h);
-    sq_status st = sel && index && held && mc && h ? SQ_OK
+    sq_status st = sel && number && held && mc && h ? SQ_OK
                                                    : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     for (int k = 0; k < f->n && st == SQ_OK; k++) {
         if (sq_domain_face_shares(d, k) != shares) continue;
@@ -100,9 +101,9 @@ static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
         }
         for (int e = 0; e < ne; e++) held[n][e] = d->curves[d->curve_of[k][e]].face[1] >= 0;
         mc[n] = minc ? minc[k] : NULL;
-        sel[n] = k, index[n++] = f->face[k].index;
+        sel[n] = k, number[n++] = f->face[k].index;
     }
-    if (st == SQ_OK) st = sq_api_faces_mesh(m, n, index, o, shares ? held : NULL, mc, h, err);
+    if (st == SQ_OK) st = sq_api_faces_mesh(m, n, number, o, shares ? held : NULL, mc, h, err);
     for (int i = 0; i < n && st == SQ_OK; i++) {
         int k = sel[i];
         road[k] = !strcmp(h[i]->road.name, "split") ? "split" : "layout";
@@ -111,7 +112,7 @@ static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
     }
     for (int i = 0; i < f->n && held; i++) free(held[i]);
     for (int i = 0; i < f->n && h; i++) sq_mesh_free(&h[i]);
-    free(sel), free(index), free(held), free(mc), free(h);
+    free(sel), free(number), free(held), free(mc), free(h);
     return st;
 }
 

@@ -4,14 +4,16 @@
  * it (held edges, chord counts), so the faces run as the items of one
  * sq_parallel_for; each writes only its own mesh, log lines and status,
  * and these are taken in face order afterwards: the meshes, the report
- * and the log's order are those of a serial run for every thread count. */
+ * and the log's order are those of a serial run for every thread count
+ * (with one thread the lines are said as they come). */
 #include "api_private.h"
 #include "sq_parallel.h"
 
 #include <stdlib.h>
 #include <string.h>
 
-/* One face's log lines, kept until the faces before it have said theirs. */
+/* One face's log lines, kept until the faces before it have said theirs
+ * (faces meshed at once). */
 typedef struct {
     sq_log_level level;
     char *text;
@@ -59,6 +61,7 @@ typedef struct {
     const sq_model *m;
     const int *faces;
     sq_options o; /* the caller's, the mesh stage's threads its share */
+    int keep;     /* 1: the log lines kept (faces at once), 0: said as they come */
     int *const *held, *const *minc;
     sq_mesh **out;
     kept_log *log;
@@ -72,8 +75,7 @@ static sq_status mesh_range(void *ctx, long begin, long end, sq_error *err)
     faces_work *w = ctx;
     for (long i = begin; i < end; i++) {
         sq_options o = w->o;
-        o.log = w->o.log ? keep_line : NULL;
-        o.log_data = &w->log[i];
+        if (w->keep && o.log) o.log = keep_line, o.log_data = &w->log[i];
         w->st[i] = sq_api_face_mesh(w->m, w->faces[i], &o, w->held ? w->held[i] : NULL,
                                     w->minc ? w->minc[i] : NULL, &w->out[i], err);
         if (w->st[i] != SQ_OK) return w->st[i];
@@ -86,14 +88,14 @@ sq_status sq_api_faces_mesh(const sq_model *m, int n, const int *faces, const sq
 {
     if (n <= 0) return SQ_OK;
     int inner, outer = sq_threads_nested(o->threads, n, &inner);
-    faces_work w = {m, faces, *o, held, minc, out, calloc((size_t)n, sizeof *w.log),
+    faces_work w = {m, faces, *o, outer > 1, held, minc, out, calloc((size_t)n, sizeof *w.log),
                     calloc((size_t)n, sizeof *w.st)};
     if (!w.log || !w.st) {
         free(w.log), free(w.st);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
-    /* progress events of faces meshed at once would interleave: sent only
-     * when one runs at a time */
+    /* the log lines and progress events of faces meshed at once would
+     * interleave: lines kept, events sent only when one runs at a time */
     w.o.threads = inner;
     if (outer > 1) w.o.progress = NULL;
     sq_status st = sq_parallel_for(outer, n, 1, mesh_range, &w, err);
