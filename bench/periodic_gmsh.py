@@ -1,24 +1,36 @@
 #!/usr/bin/python3
-"""semquad mesh --periodic against Gmsh 4.8.4's setPeriodic on one face
-(issue 16's cascade benchmark; docs/benchmarks.md).
+"""semquad against Gmsh 4.8.4 meshing the same whole file (issue 16's
+benchmarks; docs/benchmarks.md): a periodic face (the cascade) and domains
+of several faces sharing curves (the circle-square).
 
-  semquad  `semquad mesh FILE --periodic auto --order 1 [--size H] -o s.msh
-           --report s.json -q`: the pairs and their transforms from the report;
-  Gmsh     Debian's python3-gmsh 4.8.4 in this process: gmsh.open(FILE), the
-           same pairs set with gmsh.model.mesh.setPeriodic (curves found by
-           their end points: Gmsh numbers curves its own way), Mesh.Algorithm
-           6 (Frontal-Delaunay; 8, Frontal-Delaunay for quads, and 5 crash
-           in generate with setPeriodic on real T106 in 4.8.4), Mesh.RecombineAll 1,
-           Mesh.RecombinationAlgorithm 3 (Blossom full-quad),
-           Mesh.MeshSizeMax = H, Mesh.MeshSizeFactor calibrated (a few untimed
-           runs) until Gmsh's quads are within 15 % of semquad's.
+  semquad  `semquad mesh FILE [--periodic auto] --order 1 [--size H]
+           --threads T -o s.msh --report s.json -q`, every face of the file
+           (no --face): with --periodic auto for the positional FILEs, the
+           pairs and their transforms from the report; without it for the
+           --whole FILEs;
+  Gmsh     Debian's python3-gmsh 4.8.4 in this process: gmsh.open(FILE)
+           in the unit semquad reads it in (Geometry.OCCTargetUnit from
+           `semquad info --json`; every face, and faces sharing an OCCT
+           edge share its mesh), for a
+           periodic FILE the same pairs set with gmsh.model.mesh.setPeriodic
+           (curves found by their end points: Gmsh numbers curves its own
+           way), Mesh.RecombineAll 1, Mesh.RecombinationAlgorithm 3 (Blossom
+           full-quad), Mesh.CrossFieldClosestPoint 0, Mesh.MeshSizeMax = H,
+           General.NumThreads 1,
+           Mesh.MeshSizeFactor calibrated (a few untimed runs) until Gmsh's
+           quads are within 15 % of semquad's; Mesh.Algorithm 6
+           (Frontal-Delaunay; 8, Frontal-Delaunay for quads, and 5 crash in
+           generate with setPeriodic on real T106 in 4.8.4), and for a
+           --whole FILE also 8.
 Both MSH files are measured with tests/msh_quad_stats.py (quads, triangles,
-interior irregular vertices, eta) and their periodic nodes read back with
+interior irregular vertices -- a conforming mesh's shared-curve nodes are
+interior --, eta, duplicate nodes) and their periodic nodes read back with
 gmsh.model.mesh.getPeriodicNodes (largest |T(master) - node|).  Times: the
 median of --runs runs, in process (semquad: its report's timings_s.total;
 Gmsh: open + setPeriodic + generate + write).
 
-usage: /usr/bin/python3 bench/periodic_gmsh.py SEMQUAD FILE [--size H] [--runs 3]
+usage: /usr/bin/python3 bench/periodic_gmsh.py SEMQUAD [FILE ...] [--whole FILE ...]
+           [--size H] [--runs 3] [--threads 1]
 Prints one Markdown table on stdout.  Not a test."""
 import argparse
 import json
@@ -35,9 +47,10 @@ ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
 QUADSTATS = os.path.join(ROOT, "tests", "msh_quad_stats.py")
 
 
-def semquad(sq, step, size, out, runs):
+def semquad(sq, step, periodic, size, threads, out, runs):
     rep = out + ".json"
-    cmd = [sq, "mesh", step, "--periodic", "auto", "--order", "1", "-o", out, "--report", rep, "-q"]
+    cmd = [sq, "mesh", step, "--order", "1", "--threads", str(threads), "-o", out,
+           "--report", rep, "-q"] + (["--periodic", "auto"] if periodic else [])
     if size:
         cmd += ["--size", repr(size)]
     times = []
@@ -82,26 +95,51 @@ def gmsh_pairs(pairs):
     return [(s, m, aff) for s, m in links]
 
 
-def gmsh_mesh(step, pairs, hmax, factor, out):
+def file_unit(sq, step):
+    """The unit semquad reads the file in (`semquad info --json`), as
+    Gmsh's Geometry.OCCTargetUnit: both mesh in the same lengths."""
+    info = json.loads(subprocess.run([sq, "info", step, "--json"], check=True,
+                                     capture_output=True, text=True).stdout)
+    return info["unit"].upper()
+
+
+def gmsh_mesh(step, unit, pairs, algorithm, hmax, factor, out):
     gmsh.initialize(["gmsh", "-v", "0"])
     gmsh.option.setNumber("General.Terminal", 0)
     gmsh.option.setNumber("General.NumThreads", 1)
-    gmsh.option.setString("Geometry.OCCTargetUnit", "M")  # as semquad: the file's metres
+    gmsh.option.setString("Geometry.OCCTargetUnit", unit)
     t0 = time.perf_counter()
     gmsh.open(step)
-    links = gmsh_pairs(pairs)
+    links = gmsh_pairs(pairs) if pairs else []
     for s, m, aff in links:
         gmsh.model.mesh.setPeriodic(1, [s], [m], aff)
-    for k, v in (("Mesh.Algorithm", 6), ("Mesh.RecombineAll", 1),
+    for k, v in (("Mesh.Algorithm", algorithm), ("Mesh.RecombineAll", 1),
                  ("Mesh.RecombinationAlgorithm", 3), ("Mesh.MeshSizeMax", hmax),
                  ("Mesh.MeshSizeFactor", factor), ("Mesh.ElementOrder", 1),
-                 ("Mesh.MshFileVersion", 4.1)):
+                 ("Mesh.MshFileVersion", 4.1), ("Mesh.CrossFieldClosestPoint", 0)):
         gmsh.option.setNumber(k, v)
     gmsh.model.mesh.generate(2)
     gmsh.write(out)
     t = time.perf_counter() - t0
     gmsh.finalize()
     return t, len(links)
+
+
+def gmsh_row(step, unit, pairs, algorithm, hmax, quads, out, runs):
+    """Gmsh's size factor calibrated (untimed) to semquad's quad count, then
+    runs timed: (factor, its stats, median time, pairs linked)."""
+    factor = 1.0
+    for _ in range(8):
+        gmsh_mesh(step, unit, pairs, algorithm, hmax, factor, out)
+        ratio = stats(out)["quads"] / quads
+        if abs(ratio - 1) < 0.15:
+            break
+        factor *= math.sqrt(ratio)
+    times, nlinks = [], 0
+    for _ in range(runs):
+        t, nlinks = gmsh_mesh(step, unit, pairs, algorithm, hmax, factor, out)
+        times.append(t)
+    return factor, stats(out), statistics.median(times), nlinks
 
 
 def periodic_gap(msh):
@@ -130,41 +168,53 @@ def stats(msh):
                                      capture_output=True, text=True).stdout)
 
 
+ALGORITHM = {6: "Frontal-Delaunay", 8: "Frontal-Delaunay for quads"}
+
+
+def rows_of(a, step, periodic, tmp):
+    """The table's rows for one file: semquad's, then Gmsh's."""
+    s_msh, g_msh = os.path.join(tmp, "s.msh"), os.path.join(tmp, "g.msh")
+    rep, t_sq = semquad(a.semquad, step, periodic, a.size, a.threads, s_msh, a.runs)
+    sq = stats(s_msh)
+    pairs = rep["periodic"]["pairs"] if periodic else []
+    case = os.path.basename(step) + (" --periodic auto" if periodic else " (%d faces)" %
+                                     len(rep.get("faces", [0])))
+    roads = sorted({f["road"] for f in rep["faces"]}) if "faces" in rep else [rep["road"]]
+    rows = [(case, "semquad --threads %d (%s road)" % (a.threads, ", ".join(roads)), sq, t_sq,
+             periodic_gap(s_msh) if periodic else None, len(pairs))]
+    hmax = a.size or math.sqrt(rep["mesh"]["area"] / rep["mesh"]["quads"])
+    unit = file_unit(a.semquad, step)
+    for alg in (6,) if periodic else (8, 6):
+        factor, gm, t, nlinks = gmsh_row(step, unit, pairs, alg, hmax, sq["quads"], g_msh,
+                                         a.runs)
+        rows.append((case, "Gmsh 4.8.4 %s%s, f = %.2f" % (
+            ALGORITHM[alg], " setPeriodic" if periodic else "", factor), gm, t,
+            periodic_gap(g_msh) if periodic else None, nlinks))
+    return rows
+
+
 def main():
     ap = argparse.ArgumentParser()
     ap.add_argument("semquad")
-    ap.add_argument("step")
+    ap.add_argument("step", nargs="*", help="files meshed with --periodic auto")
+    ap.add_argument("--whole", action="append", default=[],
+                    help="a file meshed whole without --periodic (repeatable)")
     ap.add_argument("--size", type=float, default=0.0)
     ap.add_argument("--runs", type=int, default=3)
+    ap.add_argument("--threads", type=int, default=1, help="semquad's (Gmsh runs on 1)")
     a = ap.parse_args()
+    rows = []
     with tempfile.TemporaryDirectory() as tmp:
-        s_msh, g_msh = os.path.join(tmp, "s.msh"), os.path.join(tmp, "g.msh")
-        rep, t_sq = semquad(a.semquad, a.step, a.size, s_msh, a.runs)
-        sq = stats(s_msh)
-        hmax = a.size or math.sqrt(rep["mesh"]["area"] / rep["mesh"]["quads"])
-        factor = 1.0
-        for _ in range(8):  # untimed calibration of the quad count
-            gmsh_mesh(a.step, rep["periodic"]["pairs"], hmax, factor, g_msh)
-            ratio = stats(g_msh)["quads"] / sq["quads"]
-            if abs(ratio - 1) < 0.15:
-                break
-            factor *= math.sqrt(ratio)
-        times, nlinks = [], 0
-        for _ in range(a.runs):
-            t, nlinks = gmsh_mesh(a.step, rep["periodic"]["pairs"], hmax, factor, g_msh)
-            times.append(t)
-        gm = stats(g_msh)
-        rows = [("semquad (%s road)" % rep["road"], sq, t_sq, periodic_gap(s_msh),
-                 len(rep["periodic"]["pairs"])),
-                ("Gmsh 4.8.4 setPeriodic, f = %.2f" % factor, gm, statistics.median(times),
-                 periodic_gap(g_msh), nlinks)]
-        print("| mesher | pairs | quads | triangles | irregular interior | eta mean | eta worst "
-              "| largest periodic gap | links read back | time (s) |")
-        print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
-        for name, st, t, (gap, links), npairs in rows:
-            print("| %s | %d | %d | %d | %d | %.3f | %.3f | %.1e | %d | %.2f |" % (
-                name, npairs, st["quads"], st["triangles"], st["interior_irregular"],
-                st["eta_mean"], st["eta_min"], gap, links, t))
+        for step, periodic in [(f, True) for f in a.step] + [(f, False) for f in a.whole]:
+            rows += rows_of(a, step, periodic, tmp)
+    print("| file | mesher | pairs | quads | triangles | irregular interior | eta mean | "
+          "eta worst | duplicate nodes | largest periodic gap | links read back | time (s) |")
+    print("| --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- | --- |")
+    for case, name, st, t, gap, npairs in rows:
+        print("| %s | %s | %d | %d | %d | %d | %.3f | %.3f | %d | %s | %s | %.2f |" % (
+            case, name, npairs, st["quads"], st["triangles"], st["interior_irregular"],
+            st["eta_mean"], st["eta_min"], st["duplicate_nodes"],
+            "%.1e" % gap[0] if gap else "—", "%d" % gap[1] if gap else "—", t))
 
 
 if __name__ == "__main__":

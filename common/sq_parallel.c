@@ -2,6 +2,7 @@
 #define _POSIX_C_SOURCE 200809L
 #include "sq_parallel.h"
 
+#include <omp.h>
 #include <pthread.h>
 #include <stdlib.h>
 #include <unistd.h>
@@ -13,6 +14,7 @@ typedef struct {
     sq_range_fn fn;
     void *ctx;
     long begin, end;
+    int omp_levels; /* the caller's omp_get_max_active_levels() */
     sq_status st;
     sq_error err;
 } par_range;
@@ -20,6 +22,12 @@ typedef struct {
 static void *run_range(void *arg)
 {
     par_range *r = arg;
+    /* a POSIX thread starts with OpenMP's initial settings, not its
+     * creator's (libgomp): the caller's limit on nested parallel regions
+     * kept, so that CHOLMOD's supernodal loops, which the command runs on
+     * the calling thread (src/cli/main.c), start no team of their own in
+     * each of these threads */
+    omp_set_max_active_levels(r->omp_levels);
     r->st = r->fn(r->ctx, r->begin, r->end, &r->err);
     return NULL;
 }
@@ -29,6 +37,14 @@ int sq_threads_resolve(int threads)
     if (threads > 0) return threads < PAR_MAX_THREADS ? threads : PAR_MAX_THREADS;
     long n = sysconf(_SC_NPROCESSORS_ONLN);
     return n < 1 ? 1 : n < PAR_MAX_THREADS ? (int)n : PAR_MAX_THREADS;
+}
+
+int sq_threads_nested(int threads, long n, int *inner)
+{
+    int t = sq_threads_resolve(threads);
+    int outer = n < 1 ? 1 : n < t ? (int)n : t;
+    *inner = t / outer;
+    return outer;
 }
 
 sq_status sq_parallel_for(int threads, long n, long grain, sq_range_fn fn, void *ctx,
@@ -46,8 +62,9 @@ sq_status sq_parallel_for(int threads, long n, long grain, sq_range_fn fn, void 
         free(r), free(id), free(started);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
+    int levels = omp_get_max_active_levels();
     for (long k = 0; k < t; k++)
-        r[k] = (par_range){fn, ctx, n * k / t, n * (k + 1) / t, SQ_OK, {0}};
+        r[k] = (par_range){fn, ctx, n * k / t, n * (k + 1) / t, levels, SQ_OK, {0}};
     /* ranges 1.. on new threads, range 0 here; a range whose thread could
      * not start runs here too */
     for (long k = 1; k < t; k++) started[k] = pthread_create(&id[k], NULL, run_range, &r[k]) == 0;

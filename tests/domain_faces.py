@@ -26,7 +26,9 @@ kernel (python3-gmsh) and fragmented so that faces share their edges:
   ring4          the sector's ring cut by the arc r = 0.75 and the ray at
                  22.5 deg into four faces sharing four edges; its two
                  radial sides (two edges each) periodic under the rotation
-                 by 45 deg.
+                 by 45 deg;
+  grid_holes     the square [0,2]^2 as four unit squares sharing four edges,
+                 each with a round hole of radius 0.25 at its centre.
 
 usage: domain_faces.py NAME OUT.step; prints the exact face areas, one a line."""
 import math
@@ -81,6 +83,12 @@ def build(name):
                 occ.addPlaneSurface([loop])
         occ.remove([(0, 100)])
         return [math.pi / 16 * (s * s - r * r) for k in (0, 1) for r, s in ((0.5, 0.75), (0.75, 1))]
+    if name == "grid_holes":
+        cells = [occ.cut([(2, occ.addRectangle(i, j, 0, 1, 1))],
+                         [(2, occ.addDisk(i + 0.5, j + 0.5, 0, 0.25, 0.25))])[0][0]
+                 for j in (0, 1) for i in (0, 1)]
+        occ.fragment([cells[0]], cells[1:])
+        return [1 - math.pi * 0.0625] * 4
     if name == "channel":
         a = occ.addRectangle(0, 0, 0, 3, 1)
         b = occ.addDisk(1.2, 0.5, 0, 0.25, 0.25)

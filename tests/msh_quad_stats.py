@@ -17,7 +17,10 @@ Prints one JSON object:
       alpha_k signed w.r.t. the majority orientation of the elements, in
       [0°, 360°): a reflex or folded quad has eta <= 0, docs/conventions.md
       "Quality"),
-  inverted_quads (corner polygons of the minority orientation or zero area).
+  inverted_quads (corner polygons of the minority orientation or zero area),
+  duplicate_nodes (pairs of element corners that are two nodes closer than
+      1e-9 of the mesh's diameter: a mesh that does not conform where two
+      faces meet has them).
 usage: msh_quad_stats.py MESH.msh"""
 import json
 import math
@@ -25,6 +28,7 @@ import sys
 
 import gmsh
 import numpy as np
+from scipy.spatial import cKDTree
 
 
 def read_elements(path):
@@ -87,13 +91,16 @@ def stats(path):
     boundary_irr = sum(1 for v in boundary
                        if valence[v] != max(1, math.floor(theta[v] / (math.pi / 2) + 0.5)))
     nq = len(quads)
+    p = np.array([pos[v] for v in valence]).reshape(-1, 2)
+    diameter = math.hypot(*np.ptp(p, axis=0)) if len(p) else 0.0
+    duplicates = len(cKDTree(p).query_pairs(1e-9 * diameter)) if len(p) else 0
     return {"quads": nq, "triangles": len(tris), "vertices": len(valence),
             "boundary_vertices": len(boundary),
             "euler_chi": len(valence) - len(edges) + nq + len(tris),
             "interior_irregular": interior_irr, "boundary_irregular": boundary_irr,
             "eta_mean": float(eta.mean()) if nq else None, "eta_min": float(eta.min()) if nq else None,
             "eta_pct_gt_0.9": float(100.0 * (eta > 0.9).sum() / nq) if nq else None,
-            "inverted_quads": int((sign * qarea <= 0).sum())}
+            "inverted_quads": int((sign * qarea <= 0).sum()), "duplicate_nodes": duplicates}
 
 
 def against_report(msh, d):
