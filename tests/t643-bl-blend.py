@@ -29,6 +29,11 @@ layers, then the gradation g up to the isotropic size.
   below 0.5 on these lines), so at most max(r, g) * 1.1; measured 1.397
   (the wake's lines, where the box refinement's sheets raise the count),
   1.301 without the wake box (was 1.99: the transfinite map's columns).
+- The report's "boundary_layers" key (docs/sizes.md, "The report"): the
+  asked values back, and the achieved ones within the same band: first
+  heights and thickness within 3 % of h0 and T, every layer's growth
+  within r (1.03 / 0.97)^{+-1}, all 4 layers inside T, one column per
+  quad on the wall (as many as the lines above).
 Usage: t643-bl-blend.py SEMQUAD"""
 import json
 import math
@@ -89,6 +94,35 @@ def lines(pos, quads):
     return out
 
 
+def check_report(report, columns):
+    """The report's boundary_layers key against the asked layers."""
+    thick = H0 * (RATIO ** LAYERS - 1) / (RATIO - 1)
+    bls = report.get("boundary_layers", [])
+    if len(bls) != 1 or bls[0]["edge"] != 4:
+        fails.append("report: boundary_layers %r, expects one entry for edge 4" % bls)
+        return
+    asked, got = bls[0]["requested"], bls[0]["achieved"]
+    print("report: first %.5f..%.5f (median %.5f), ratio %.4f..%.4f, %d layers, thickness "
+          "%.5f..%.5f" % (got["first_min"], got["first_max"], got["first_median"],
+                          got["ratio_min"], got["ratio_max"], got["layers"],
+                          got["thickness_min"], got["thickness_max"]))
+    if (abs(asked["first"] - H0) > 1e-12 or abs(asked["ratio"] - RATIO) > 1e-12
+            or asked["layers"] != LAYERS or abs(asked["thickness"] - thick) > 1e-12):
+        fails.append("report: requested %r, expects %g, %g, %d, %g"
+                     % (asked, H0, RATIO, LAYERS, thick))
+    lo, hi = 1 - FIRST_TOL, 1 + FIRST_TOL
+    if not (lo * H0 <= got["first_min"] <= got["first_median"] <= got["first_max"] <= hi * H0):
+        fails.append("report: first heights %r outside [%g, %g] h0" % (got, lo, hi))
+    if not (lo * thick <= got["thickness_min"] <= got["thickness_max"] <= hi * thick):
+        fails.append("report: thickness outside [%g, %g] T" % (lo, hi))
+    if not (RATIO * lo / hi <= got["ratio_min"] <= got["ratio_max"] <= RATIO * hi / lo):
+        fails.append("report: layer growth %.4f..%.4f, outside r (%g/%g)^{+-1}"
+                     % (got["ratio_min"], got["ratio_max"], hi, lo))
+    if got["layers"] != LAYERS or got["columns"] != columns:
+        fails.append("report: %d layers (expects %d), %d columns (expects %d)"
+                     % (got["layers"], LAYERS, got["columns"], columns))
+
+
 def main():
     with tempfile.TemporaryDirectory() as d:
         step, msh, rep = (os.path.join(d, n) for n in ("dfg.step", "dfg.msh", "dfg.json"))
@@ -102,7 +136,8 @@ def main():
         if r.returncode:
             print("FAIL mesh: exit %d: %s" % (r.returncode, r.stderr.strip()))
             return 1
-        m = json.load(open(rep))["mesh"]
+        report = json.load(open(rep))
+        m = report["mesh"]
         print("%d quads, worst eta %.3f, scaled Jacobian %.3f" %
               (m["quads"], m["quality"]["min"], m["min_scaled_jacobian"]))
         if m["inverted"] or not m["min_scaled_jacobian"] >= 0.3 or not m["quality"]["min"] >= 0.3:
@@ -132,6 +167,7 @@ def main():
     if worst > max(RATIO, G) * RAMP:
         fails.append("neighbour cells along a line differ by %.3f, above %.3f"
                      % (worst, max(RATIO, G) * RAMP))
+    check_report(report, len(found))
     for f in fails:
         print("FAIL", f)
     return 1 if fails else 0
