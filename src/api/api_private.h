@@ -81,6 +81,9 @@ struct sq_mesh {
     double *sjac, *eta;
     int *bnd;
     int nbl;              /* boundary layers asked for (sq_options.nbl), for the blame */
+    int *bl_edges;        /* their walls (nbl), first height, ratio and layers, for the report */
+    double bl_first, bl_ratio;
+    int bl_layers;
     int threads;          /* sq_options.threads, for the quality and the edges */
     sq_size_field *sizes; /* the user's sizes (NULL: none), read by the mesher */
     double far_size;      /* the size the mesh was made at (--size, or the default) */

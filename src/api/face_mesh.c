@@ -577,6 +577,12 @@ sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
     }
     sq_api_log(o, SQ_LOG_INFO, "meshed (%.3f s)", h->t.mesh);
     h->nbl = o->nbl;
+    if (o->nbl > 0 && !(h->bl_edges = malloc(sizeof(int) * (size_t)o->nbl))) {
+        sq_mesh_free(&h);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    if (o->nbl > 0) memcpy(h->bl_edges, o->bl_edges, sizeof(int) * (size_t)o->nbl);
+    h->bl_first = mo.bl_first, h->bl_ratio = mo.bl_ratio, h->bl_layers = mo.bl_layers;
     *out = h;
     return SQ_OK;
 }
@@ -637,6 +643,7 @@ void sq_mesh_free(sq_mesh **m)
     sq_api_domain_free(&h->dom);
     sq_periodic_free(&h->per);
     free(h->per_held);
+    free(h->bl_edges);
     free(h);
     *m = NULL;
 }
@@ -732,15 +739,22 @@ static sq_mesh_timings timings(const sq_mesh *m)
 }
 
 /* The report's "sizes" key: the mesh against the user's sizes, when set
- * (rep filled: the caller frees it), else *sz NULL. */
-static sq_status report_sizes(const sq_mesh *m, sq_size_report *rep, sq_report_sizes *out,
-                              const sq_report_sizes **sz, sq_error *err)
+ * (rep filled), and its "boundary_layers" key, when asked (bl filled; the
+ * caller frees both); neither: *sz NULL. */
+static sq_status report_sizes(const sq_mesh *m, sq_size_report *rep, sq_bl_report *bl,
+                              sq_report_sizes *out, const sq_report_sizes **sz, sq_error *err)
 {
     *sz = NULL;
     memset(rep, 0, sizeof *rep);
-    if (!m->sizes) return SQ_OK;
-    SQ_TRY(sq_size_report_compute(m->q, m->sizes, m->far_size, rep, err));
-    out->report = rep;
+    memset(bl, 0, sizeof *bl);
+    memset(out, 0, sizeof *out);
+    if (!m->sizes && !m->bl_edges) return SQ_OK;
+    if (m->sizes) SQ_TRY(sq_size_report_compute(m->q, m->sizes, m->far_size, rep, err));
+    if (m->bl_edges)
+        SQ_TRY(sq_bl_report_compute(m->q, m->face.cad, m->bl_edges, m->nbl, m->bl_first,
+                                    m->bl_ratio, m->bl_layers, bl, err));
+    out->report = m->sizes ? rep : NULL;
+    out->bl = m->bl_edges ? bl : NULL;
     out->far = m->far_size;
     *sz = out;
     return SQ_OK;
@@ -751,9 +765,15 @@ sq_status sq_mesh_report(const sq_mesh *m, char **json, sq_error *err)
     sq_mesh_timings t = timings(m);
     if (m->dom) return sq_api_domain_report(m, &t, json, err);
     sq_size_report rep;
+    sq_bl_report bl;
     sq_report_sizes rs;
     const sq_report_sizes *sz;
-    SQ_TRY(report_sizes(m, &rep, &rs, &sz, err));
+    sq_status st0 = report_sizes(m, &rep, &bl, &rs, &sz, err);
+    if (st0 != SQ_OK) {
+        sq_size_report_free(&rep);
+        sq_bl_report_free(&bl);
+        return st0;
+    }
     sq_api_text txt;
     sq_status st = sq_api_text_open(&txt, err);
     if (st == SQ_OK) {
@@ -762,6 +782,7 @@ sq_status sq_mesh_report(const sq_mesh *m, char **json, sq_error *err)
         st = sq_api_text_close(&txt, json, err);
     }
     sq_size_report_free(&rep);
+    sq_bl_report_free(&bl);
     return st;
 }
 
@@ -770,13 +791,15 @@ sq_status sq_mesh_write_report(const sq_mesh *m, const char *path, sq_error *err
     sq_mesh_timings t = timings(m);
     if (m->dom) return sq_api_domain_write_report(m, &t, path, err);
     sq_size_report rep;
+    sq_bl_report bl;
     sq_report_sizes rs;
     const sq_report_sizes *sz;
-    SQ_TRY(report_sizes(m, &rep, &rs, &sz, err));
-    sq_status st = sq_write_mesh_report(path, m->face.model->path, m->face.model->cad,
-                                        m->face.index, &m->info, &m->road, &m->r, m->q,
-                                        &m->quality, sz, &t, err);
+    sq_status st = report_sizes(m, &rep, &bl, &rs, &sz, err);
+    if (st == SQ_OK)
+        st = sq_write_mesh_report(path, m->face.model->path, m->face.model->cad, m->face.index,
+                                  &m->info, &m->road, &m->r, m->q, &m->quality, sz, &t, err);
     sq_size_report_free(&rep);
+    sq_bl_report_free(&bl);
     return st;
 }
 

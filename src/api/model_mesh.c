@@ -340,6 +340,44 @@ static sq_status keep_domain(sq_mesh *h, const sq_domain *d, const faces_open *f
     return SQ_OK;
 }
 
+/* The user's sizes on a domain of several faces, each face meshed with
+ * them in its own frame by its own edge numbers: edge-numbered sources
+ * (--edge-size, --grow) and boundary layers (--bl) would name another
+ * curve in every face, so they are refused (docs/sizes.md); points and
+ * boxes are accepted where every face's frame is face 0's, the domain's
+ * (faces of one plane drawn in one frame), which they are given in. */
+static sq_status domain_sizes_check(const sq_domain *d, int n, const sq_options *o,
+                                    sq_error *err)
+{
+    int located = 0;
+    for (int i = 0; i < o->nsizes; i++) {
+        if (o->sizes[i].kind == SQ_SIZE_EDGE)
+            return SQ_FAIL(err, SQ_ERR_USAGE,
+                           "size source %d (--edge-size, --grow, or an edge/grow line): a CAD edge "
+                           "number names each face's own edge, not one curve of a domain of %d "
+                           "faces; mesh one face (--face N), or use --refine/--refine-box",
+                           i + 1, n);
+        located = 1;
+    }
+    if (o->nbl > 0)
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "--bl on a domain of %d faces: a CAD edge number names each face's own "
+                       "edge, not one curve of the domain; mesh the face with the wall (--face N)",
+                       n);
+    for (int f = 1; located && f < n; f++) {
+        double A[6];
+        int flip;
+        sq_domain_frame(d, f, A, &flip);
+        double off = fabs(A[0] - 1.0) + fabs(A[1]) + fabs(A[3]) + fabs(A[4] - 1.0);
+        if (flip || off > 1e-12 || fabs(A[2]) + fabs(A[5]) > 1e-12 * o->size)
+            return SQ_FAIL(err, SQ_ERR_USAGE,
+                           "--refine/--refine-box on a domain of %d faces: face %d's frame is not "
+                           "face 0's, in which the coordinates are given; mesh one face "
+                           "(--face N)", n, f);
+    }
+    return SQ_OK;
+}
+
 /* Several faces: the domain's curves (and periodic pairs), the meshes of
  * its faces, merged (and linked). */
 static sq_status mesh_domain(const sq_model *m, const int *faces, int n, const sq_options *o,
@@ -365,6 +403,7 @@ static sq_status mesh_domain(const sq_model *m, const int *faces, int n, const s
     if (st == SQ_OK) h->face = f.face[0], f.face[0].cad = NULL, f.cad[0] = h->face.cad;
     double tol = fmax(cad_model_heal_tolerance(m->cad), 1e-6 * os.size);
     if (st == SQ_OK) st = sq_domain_build(n, f.cad, f.info, tol, &d, err);
+    if (st == SQ_OK) st = domain_sizes_check(&d, n, &os, err);
     if (st == SQ_OK && d.ninterfaces > 0)
         sq_api_log(o, SQ_LOG_NOTE, "%d faces share %d curves (docs/domains.md)", n, d.ninterfaces);
     if (st == SQ_OK && o->periodic) st = find_pairs(&d, o, &per, &ds, err);

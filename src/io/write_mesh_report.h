@@ -27,10 +27,12 @@ typedef struct {
 } sq_road_choice;
 
 /* The user's sizes against the mesh, and the far size h was read with
- * (the "sizes" key; NULL: no sizes, no key). */
+ * (the "sizes" key; report NULL: no sizes, no key); the boundary layers
+ * achieved against those asked (the "boundary_layers" key; NULL: none). */
 typedef struct {
     const sq_size_report *report;
     double far;
+    const sq_bl_report *bl;
 } sq_report_sizes;
 
 /* model: the file read, for the face's "healing" key; info: the face; r:

@@ -52,13 +52,13 @@ static sq_status held_keep(const sq_mesher_options *opt, const qm_vmesh *v, int 
 static int is_quad(const sq_layout_patch *p) { return p->ncorners == 4 && p->ncycles == 1; }
 
 /* Design 3 from the glued vertex mesh on: untangling, relaxation, order Q.
- * *out is NULL unless SQ_OK. */
+ * keep (NULL, or nv flags, taken over): vertices the relaxation holds,
+ * more added for opt->held_edges.  *out is NULL unless SQ_OK. */
 static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh *v,
-                        const sq_mesher_options *opt, sq_quad_mesh **out, sq_error *err)
+                        const sq_mesher_options *opt, int *keep, sq_quad_mesh **out,
+                        sq_error *err)
 {
     int Q = opt->order;
-    /* boundary layers are the sizes' grading, which the relaxation keeps */
-    int *keep = NULL;
     sq_status st = held_keep(opt, v, &keep, err);
     /* untangling, where transfinite interpolation folded a quad */
     int folded = 0;
@@ -80,6 +80,13 @@ static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh
         if (attempt < 2)
             st = qm_relax(face, info, v, keep, attempt == 0, opt, &work, &folded, err);
         if (folded) continue;
+        /* the relaxation balances shapes against sizes and moves the
+         * layers' nodes along their lines by up to a third of a cell: the
+         * lines re-graded from the wall to a few cells into the core, where
+         * the relaxed grid meets the metric again */
+        if (st == SQ_OK && opt->nbl > 0 && attempt < 2)
+            st = qm_regrade_walls(opt, sq_mesher_size(opt, info->area), opt->bl_layers, v, NULL,
+                                  err);
         if (st == SQ_OK) st = qm_raise_order(face, v, Q, opt->nodes, opt, &m, err);
         sq_quad_quality qq;
         if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, opt->threads, &qq, err);
@@ -119,7 +126,7 @@ sq_status sq_mesh_linear_quads(const cad_face *face, const sq_face_info *info,
         memcpy(v.quad, lq->quad, sizeof(int) * 4 * (size_t)lq->nq);
         memcpy(v.patch, lq->block, sizeof(int) * (size_t)lq->nq);
         memcpy(v.side_tag, lq->side_tag, sizeof(int) * 4 * (size_t)lq->nq);
-        st = finish(face, info, &v, opt, out, err);
+        st = finish(face, info, &v, opt, NULL, out, err);
     }
     qm_vmesh_free(&v);
     return st;
@@ -209,9 +216,15 @@ static sq_status mesh_layout(const cad_face *face, const sq_face_info *info, con
     free(need);
     qm_vmesh v = {0};
     if (st == SQ_OK) st = qm_assemble(L, face, opt, nseg, cum, &v, err);
+    /* boundary layers: every line leaving a wall graded by the metric, the
+     * irregular vertices where such lines end held by the relaxation (an
+     * O-grid's corners: the spokes' counts were set for their length) */
+    int *keep = NULL;
+    if (st == SQ_OK && opt->nbl > 0) st = qm_regrade_walls(opt, size, 0, &v, &keep, err);
     if (st == SQ_OK && opt->slid.npairs) st = qm_slide_periodic(face, opt, &v, err);
     if (st == SQ_OK && opt->edge_points) st = qm_slide_shared(face, opt, &v, err);
-    if (st == SQ_OK) st = finish(face, info, &v, opt, out, err);
+    if (st == SQ_OK) st = finish(face, info, &v, opt, keep, out, err);
+    else free(keep);
     qm_vmesh_free(&v);
     if (st == SQ_OK) st = refine_levels(face, levels, opt, out, err);
     if (st != SQ_OK) sq_quad_mesh_free(out);

@@ -114,6 +114,20 @@ sq_status qm_assemble(const sq_layout *L, const cad_face *face, const sq_mesher_
                       const int *nseg, const double *cum, qm_vmesh *v, sq_error *err);
 void qm_vmesh_free(qm_vmesh *v);
 
+/* ---- quad_regrade.c: boundary layers exact on every grid line ---- */
+
+/* With boundary layers (o->nbl, o->sizes the walls' field, read with the
+ * far size far): every grid line of v leaving a wall, followed straight
+ * on through regular interior vertices to the boundary or an irregular
+ * vertex (reach > 0: to `reach` vertices past the first where the size
+ * along it is isotropic), its nodes moved along it so that its first
+ * o->bl_layers cells are the metric's and the rest keep its count; a
+ * line whose move would fold a quad is left as it was.  ends (NULL: not
+ * wanted): *ends allocated, 1 at the irregular interior vertices where
+ * such a line ends. */
+sq_status qm_regrade_walls(const sq_mesher_options *o, double far, int reach, qm_vmesh *v,
+                           int **ends, sq_error *err);
+
 /* ---- quad_slide.c: vertices slid along curves ---- */
 
 /* The vertices of each pair of opt->slid on b set to the images of a's,

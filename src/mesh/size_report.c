@@ -1,5 +1,7 @@
 #include "size_report.h"
 
+#include "quad_edges.h"
+
 #include <math.h>
 #include <stdlib.h>
 #include <string.h>
@@ -123,4 +125,120 @@ sq_status sq_size_report_compute(const sq_quad_mesh *m, const sq_size_field *f, 
     free(scratch);
     free(r);
     return SQ_OK;
+}
+
+/* ---- boundary layers ---- */
+
+void sq_bl_report_free(sq_bl_report *r)
+{
+    if (!r) return;
+    free(r->edge);
+    memset(r, 0, sizeof *r);
+}
+
+/* Mean distance from wall `edge` of the corners of side k of quad q. */
+static sq_status side_distance(const sq_quad_mesh *m, const cad_face *face, int edge, int q, int k,
+                               double *d, sq_error *err)
+{
+    *d = 0.0;
+    for (int c = 0; c < 2; c++) {
+        double dist;
+        SQ_TRY(cad_face_edge_project(face, edge, &m->xy[2 * sq_quad_corner_node(m, q, (k + c) % 4)],
+                                     NULL, NULL, &dist, err));
+        *d += 0.5 * dist;
+    }
+    return SQ_OK;
+}
+
+/* The cells of the column from boundary side b (on wall `edge`), up to
+ * `cells` of them or the boundary: the tops' distances top[] from the
+ * wall; their count. */
+static sq_status column(const sq_quad_mesh *m, const sq_quad_edges *e, const int *other,
+                        const cad_face *face, int edge, int b, int cells, double *top, int *count,
+                        sq_error *err)
+{
+    int q = m->bnd_quad[b], k = m->bnd_side[b];
+    *count = 0;
+    while (*count < cells) {
+        int far = (k + 2) % 4, s = 4 * q + far, ed = e->side_edge[s];
+        SQ_TRY(side_distance(m, face, edge, q, far, &top[(*count)++], err));
+        int next = e->owner[ed] == s ? other[ed] : e->owner[ed];
+        if (e->tag[ed] >= 0 || next < 0) break;
+        q = next / 4, k = next % 4;
+    }
+    return SQ_OK;
+}
+
+/* One wall's figures into r (asked: first height, ratio, layers n, the
+ * tolerance tol on the thickness t). */
+static sq_status wall_report(const sq_quad_mesh *m, const sq_quad_edges *e, const int *other,
+                             const cad_face *face, int n, double t, double tol, double *top,
+                             double *first, sq_bl_edge_report *r, sq_error *err)
+{
+    r->first_min = r->ratio_min = r->thickness_min = HUGE_VAL;
+    r->first_max = r->ratio_max = r->thickness_max = -HUGE_VAL;
+    r->layers = n + 1;
+    for (int b = 0; b < m->nbnd; b++) {
+        if (m->bnd_tag[b] != r->edge) continue;
+        int count, in = 0;
+        SQ_TRY(column(m, e, other, face, r->edge, b, n + 1, top, &count, err));
+        first[r->columns++] = top[0];
+        for (int j = 1; j < count && j < n; j++) {
+            double ratio = (top[j] - top[j - 1]) / (j > 1 ? top[j - 1] - top[j - 2] : top[0]);
+            r->ratio_min = fmin(r->ratio_min, ratio);
+            r->ratio_max = fmax(r->ratio_max, ratio);
+        }
+        while (in < count && top[in] <= t + tol) in++;
+        r->layers = in < r->layers ? in : r->layers;
+        if (in > 0) {
+            r->thickness_min = fmin(r->thickness_min, top[in - 1]);
+            r->thickness_max = fmax(r->thickness_max, top[in - 1]);
+        }
+    }
+    if (r->ratio_min == HUGE_VAL) r->ratio_min = r->ratio_max = 0.0; /* one layer */
+    if (r->thickness_min == HUGE_VAL) r->thickness_min = r->thickness_max = 0.0;
+    if (r->columns == 0) {
+        r->first_min = r->first_max = 0.0, r->layers = 0;
+        return SQ_OK;
+    }
+    qsort(first, (size_t)r->columns, sizeof *first, cmp_double);
+    r->first_min = first[0];
+    r->first_max = first[r->columns - 1];
+    r->first_median = first[r->columns / 2];
+    return SQ_OK;
+}
+
+sq_status sq_bl_report_compute(const sq_quad_mesh *m, const cad_face *face, const int *edges,
+                               int n, double first, double ratio, int layers, sq_bl_report *out,
+                               sq_error *err)
+{
+    memset(out, 0, sizeof *out);
+    out->first = first, out->ratio = ratio, out->layers = layers;
+    out->thickness = ratio == 1.0 ? first * layers
+                                  : first * (pow(ratio, layers) - 1.0) / (ratio - 1.0);
+    sq_quad_edges e = {0};
+    SQ_TRY(sq_quad_edges_build(m, 1, &e, err));
+    int *other = malloc(sizeof(int) * ((size_t)e.nedges + 1));
+    double *top = malloc(sizeof(double) * ((size_t)layers + 2));
+    double *firsts = malloc(sizeof(double) * ((size_t)m->nbnd + 1));
+    out->edge = calloc((size_t)n + 1, sizeof *out->edge);
+    sq_status st = other && top && firsts && out->edge
+                       ? SQ_OK
+                       : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    /* each edge's second side, -1 on the boundary */
+    for (int k = 0; st == SQ_OK && k < e.nedges; k++) other[k] = -1;
+    for (int s = 0; st == SQ_OK && s < 4 * m->nquads; s++)
+        if (e.owner[e.side_edge[s]] != s) other[e.side_edge[s]] = s;
+    /* half the last layer: the next cell is r times it at least */
+    double tol = 0.5 * first * pow(ratio, layers - 1);
+    for (int w = 0; st == SQ_OK && w < n; w++) {
+        out->edge[w].edge = edges[w];
+        st = wall_report(m, &e, other, face, layers, out->thickness, tol, top, firsts,
+                         &out->edge[w], err);
+    }
+    out->nedges = n;
+    free(other), free(top), free(firsts);
+    sq_quad_edges_free(&e);
+    if (st != SQ_OK) sq_bl_report_free(out);
+    return st;
 }
