@@ -56,6 +56,12 @@ const double GL_W[5] = {0.2955242247147528701738930, 0.2692667193099963550912269
                         0.2190863625159820439955349, 0.1494513491505805931457763,
                         0.0666713443086881375935688};
 
+const size_t PROJ_BLOCK = 16;
+
+struct ProjBlock {
+    double lo[3], hi[3], sag;
+};
+
 struct Edge {
     TopoDS_Edge edge;
     Handle(BRepAdaptor_Curve) curve;
@@ -71,6 +77,9 @@ struct Edge {
     // psag on how far the curve strays from it
     std::vector<double> pu, psag;
     std::vector<gp_Pnt> pp;
+    // per block of PROJ_BLOCK chords: the box of their points and their
+    // largest sagitta bound, to skip blocks far from the point projected
+    std::vector<ProjBlock> pblock;
     double start[2] = {0, 0}, end[2] = {0, 0}; // 2D end points in the direction of travel,
                                                // shared exactly with the neighbouring edges
 };
@@ -196,6 +205,20 @@ void build_projection(Edge &e)
             const gp_Pnt A = e.pp.back(); // a copy: the table grows under it
             project_chords(e, e.pu.back(), A, b, e.curve->Value(b), floor, 0);
         }
+    const size_t n = e.pu.size() - 1;
+    e.pblock.clear();
+    for (size_t k0 = 0; k0 < n; k0 += PROJ_BLOCK) {
+        const size_t k1 = std::min(n, k0 + PROJ_BLOCK);
+        ProjBlock b = {{HUGE_VAL, HUGE_VAL, HUGE_VAL}, {-HUGE_VAL, -HUGE_VAL, -HUGE_VAL}, 0.0};
+        for (size_t k = k0; k <= k1; ++k)
+            for (int c = 0; c < 3; ++c) {
+                b.lo[c] = std::min(b.lo[c], e.pp[k].Coord(c + 1));
+                b.hi[c] = std::max(b.hi[c], e.pp[k].Coord(c + 1));
+            }
+        for (size_t k = k0; k < k1; ++k)
+            b.sag = std::max(b.sag, e.psag[k]);
+        e.pblock.push_back(b);
+    }
 }
 
 // Lines and circles move at constant speed: arc length is affine in the
@@ -725,15 +748,44 @@ static void polish(const Edge &e, const gp_Pnt &P, double a, double b, double u,
     }
 }
 
+// Squared distance from P to block b's box: at most the squared distance
+// P.SquareDistance(Q) of any of its points Q, as computed (each difference
+// and the sum of squares round monotonically).
+static double box_d2(const ProjBlock &b, const gp_Pnt &P)
+{
+    double d2 = 0, d;
+    for (int c = 0; c < 3; ++c) {
+        const double x = P.Coord(c + 1);
+        d = x < b.lo[c] ? b.lo[c] - x : x > b.hi[c] ? x - b.hi[c] : 0.0;
+        d2 += d * d;
+    }
+    return d2;
+}
+
 // Parameter of the closest point of edge e to P, and its squared distance
-// (design 5).
+// (design 5).  The blocks whose box is farther than a point already found
+// are skipped in both passes: the points they hold cannot be nearer, nor
+// their chords candidates, so the nearest point (the first of equals), the
+// candidates and their order are those of the scan of every chord.
 static double closest_u(const Edge &e, const gp_Pnt &P, double *d2_out)
 {
-    const size_t n = e.pu.size() - 1;
+    const size_t n = e.pu.size() - 1, nb = e.pblock.size();
+    std::vector<double> bd2(nb);
+    size_t near = 0;
+    for (size_t b = 0; b < nb; ++b) {
+        bd2[b] = box_d2(e.pblock[b], P);
+        if (bd2[b] < bd2[near]) near = b;
+    }
+    double seed = HUGE_VAL; // a squared distance the nearest point does not exceed
+    for (size_t k = near * PROJ_BLOCK; k <= std::min(n, (near + 1) * PROJ_BLOCK); ++k)
+        seed = std::min(seed, P.SquareDistance(e.pp[k]));
     double best_u = e.pu[0], best_d2 = HUGE_VAL;
-    for (size_t k = 0; k <= n; ++k) {
-        double d2 = P.SquareDistance(e.pp[k]);
-        if (d2 < best_d2) best_d2 = d2, best_u = e.pu[k];
+    for (size_t b = 0; b < nb; ++b) {
+        if (bd2[b] > seed) continue;
+        for (size_t k = b * PROJ_BLOCK; k <= std::min(n, (b + 1) * PROJ_BLOCK); ++k) {
+            double d2 = P.SquareDistance(e.pp[k]);
+            if (d2 < best_d2) best_d2 = d2, best_u = e.pu[k];
+        }
     }
     struct Chord {
         double lb; // distance from the chord minus its sagitta bound
@@ -741,10 +793,21 @@ static double closest_u(const Edge &e, const gp_Pnt &P, double *d2_out)
         double t; // the foot on the chord
         bool operator<(const Chord &o) const { return lb < o.lb; }
     };
+    // a chord's computed distance to P may fall short of the box's by the
+    // round-off of its foot: a margin of 1e-12 of the coordinates' size
+    double scale = std::fabs(P.X()) + std::fabs(P.Y()) + std::fabs(P.Z());
     std::vector<Chord> cand;
-    for (size_t k = 0; k < n; ++k) {
-        double t, lb = segment_distance(P, e.pp[k], e.pp[k + 1], &t) - e.psag[k];
-        if (lb <= 0 || lb * lb < best_d2) cand.push_back({lb, k, t});
+    for (size_t b = 0; b < nb; ++b) {
+        const ProjBlock &B = e.pblock[b];
+        const double m = 1e-12 * (scale + std::fabs(B.lo[0]) + std::fabs(B.lo[1]) +
+                                  std::fabs(B.lo[2]) + std::fabs(B.hi[0]) + std::fabs(B.hi[1]) +
+                                  std::fabs(B.hi[2]));
+        const double blb = std::sqrt(bd2[b]) - B.sag - m;
+        if (blb > 0 && blb * blb >= best_d2) continue;
+        for (size_t k = b * PROJ_BLOCK; k < std::min(n, (b + 1) * PROJ_BLOCK); ++k) {
+            double t, lb = segment_distance(P, e.pp[k], e.pp[k + 1], &t) - e.psag[k];
+            if (lb <= 0 || lb * lb < best_d2) cand.push_back({lb, k, t});
+        }
     }
     std::sort(cand.begin(), cand.end());
     for (const Chord &c : cand) {

@@ -234,17 +234,17 @@ static sq_status cg_solve(void *state, const sem_poisson_data *data, sem_field *
 
 static const sem_poisson_ops cg_ops = {cg_solve, cg_free, cg_ndofs, cg_work};
 
-/* x copied into a new array of n doubles (n + 1: never a zero-size malloc) */
-static double *cg_dup(const double *x, size_t n)
+/* *x handed over: returned, *x NULLed */
+static double *cg_take(double **x)
 {
-    double *y = malloc(sizeof(double) * (n + 1));
-    if (y) memcpy(y, x, sizeof(double) * n);
+    double *y = *x;
+    *x = NULL;
     return y;
 }
 
-/* The reference tables: computed, or copied from src (a solver of the same
+/* The reference tables: computed, or taken from src (a solver of the same
  * order on a mesh of the same geometry order). */
-static sq_status cg_tables(cg_state *c, const cg_state *src, sq_error *err)
+static sq_status cg_tables(cg_state *c, cg_state *src, sq_error *err)
 {
     const sem_tri_mesh *m = c->mesh;
     const int n = c->nloc, P = c->P;
@@ -258,19 +258,19 @@ static sq_status cg_tables(cg_state *c, const cg_state *src, sq_error *err)
     c->nte = c->nqe + 2;
     const size_t ne3 = 3 * (size_t)c->nte, nmf = (size_t)(P - 1) * (P - 1);
     if (src) {
-        c->B = cg_dup(src->B, (size_t)nq * n);
-        c->BrBs = cg_dup(src->BrBs, 2 * (size_t)nq * n);
-        c->G = cg_dup(src->G, (size_t)nq * ng);
-        c->Gr = cg_dup(src->Gr, (size_t)nq * ng);
-        c->Gs = cg_dup(src->Gs, (size_t)nq * ng);
-        c->te = cg_dup(src->te, (size_t)c->nqe);
-        c->we = cg_dup(src->we, (size_t)c->nqe);
-        c->Mf = cg_dup(src->Mf, nmf);
-        c->Ers = cg_dup(src->Ers, 2 * ne3);
-        c->El = cg_dup(src->El, ne3 * ng);
-        c->Elr = cg_dup(src->Elr, ne3 * ng);
-        c->Els = cg_dup(src->Els, ne3 * ng);
-        c->Epsi = cg_dup(src->Epsi, ne3 * n);
+        c->B = cg_take(&src->B);
+        c->BrBs = cg_take(&src->BrBs);
+        c->G = cg_take(&src->G);
+        c->Gr = cg_take(&src->Gr);
+        c->Gs = cg_take(&src->Gs);
+        c->te = cg_take(&src->te);
+        c->we = cg_take(&src->we);
+        c->Mf = cg_take(&src->Mf);
+        c->Ers = cg_take(&src->Ers);
+        c->El = cg_take(&src->El);
+        c->Elr = cg_take(&src->Elr);
+        c->Els = cg_take(&src->Els);
+        c->Epsi = cg_take(&src->Epsi);
     } else {
         c->B = malloc(sizeof(double) * (size_t)nq * n);
         c->BrBs = malloc(sizeof(double) * 2 * (size_t)nq * n);
@@ -326,8 +326,9 @@ static sq_status cg_tables(cg_state *c, const cg_state *src, sq_error *err)
 }
 
 
-/* A new state on mesh: basis, global numbering, tables (src's if given). */
-static sq_status cg_start(const sem_tri_mesh *mesh, int P, const cg_state *src, cg_state **out,
+/* A new state on mesh: basis, global numbering, tables (taken from src if
+ * given). */
+static sq_status cg_start(const sem_tri_mesh *mesh, int P, cg_state *src, cg_state **out,
                           sq_error *err)
 {
     cg_state *c = calloc(1, sizeof *c);
@@ -452,17 +453,13 @@ done:
 }
 
 /* src's element data: its elements are this mesh's (checked by the caller). */
-static sq_status cg_elements_copy(cg_state *c, const cg_state *src, sq_error *err)
+static void cg_elements_take(cg_state *c, cg_state *src)
 {
-    const size_t nt = (size_t)c->mesh->ntris, nb = (size_t)c->nb, ni = (size_t)c->ni;
-    c->S = cg_dup(src->S, nt * nb * nb);
-    c->W = cg_dup(src->W, nt * ni * nb);
-    c->Lii = cg_dup(src->Lii, nt * ni * ni);
-    c->mloc = cg_dup(src->mloc, nt * (size_t)c->nloc);
+    c->S = cg_take(&src->S);
+    c->W = cg_take(&src->W);
+    c->Lii = cg_take(&src->Lii);
+    c->mloc = cg_take(&src->mloc);
     c->area = src->area;
-    if (!c->S || !c->W || !c->Lii || !c->mloc)
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_cg: out of memory");
-    return SQ_OK;
 }
 
 /* The matrix's pattern and its assembly, column by column, from the
@@ -587,21 +584,21 @@ sq_status sem_poisson_cg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
     return SQ_OK;
 }
 
-sq_status sem_poisson_cg_create_like(const void *src_state, const sem_tri_mesh *mesh,
+sq_status sem_poisson_cg_create_like(void *src_state, const sem_tri_mesh *mesh,
                                      sem_bc_kind_fn kind, void *kind_ctx,
                                      const sem_poisson_ops **ops, void **state, sq_error *err)
 {
-    const cg_state *src = src_state;
+    cg_state *src = src_state;
     *ops = NULL;
     *state = NULL;
-    if (!sem_tri_mesh_same_elements(mesh, src->mesh))
-        return SQ_FAIL(err, SQ_ERR_USAGE,
-                       "poisson_create_like: the mesh does not have the solver's elements");
     cg_state *c = NULL;
     sq_status st = cg_start(mesh, src->P, src, &c, err);
     if (st == SQ_OK) st = cg_dofs(c, kind, kind_ctx, err);
-    if (st == SQ_OK) st = cg_elements_copy(c, src, err);
-    if (st == SQ_OK) st = cg_assemble(c, err);
+    if (st == SQ_OK) {
+        cg_elements_take(c, src);
+        st = cg_assemble(c, err);
+    }
+    cg_free(src); /* what it had left: its numbering and factor */
     if (st != SQ_OK) {
         cg_free(c);
         return st;

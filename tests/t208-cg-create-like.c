@@ -3,7 +3,7 @@
  * eq. 15):
  *  - it solves the same system as a solver made from scratch on the cut
  *    mesh: the same coefficients, bit for bit (tolerance 0: the element
- *    matrices are copied, not recomputed, and the numbering, assembly and
+ *    matrices are taken over, not recomputed, and the numbering, assembly and
  *    factorization are the same code on the same data, so nothing differs
  *    to round off, on any CPU);
  *  - the work it did, counted where it is done: no element matrix (the
@@ -11,7 +11,9 @@
  *  - an evaluator of the cut mesh's field built on the uncut mesh's locator
  *    gives the values of one built on its own, bit for bit (the same modal
  *    geometry, from the same nodes);
- *  - a mesh with other elements, or a DG source, is refused (usage).
+ *  - the source is taken over (NULL after);
+ *  - a mesh with other elements (the source kept), or a DG source, is
+ *    refused (usage).
  * Mesh: the curved unit disc of t207 (geometry order 8), cut along the
  * interior edges of a path of elements; pure Neumann data du/dn for
  * u = e^x sin y on every boundary edge, the cut's two sides included. */
@@ -64,9 +66,16 @@ int main(void)
     sem_poisson *src = NULL, *fresh = NULL, *like = NULL;
     SQ_TEST_OK(sem_poisson_create(disc, P, SEM_CG, kind_neu, NULL, &src, &err), err);
     SQ_TEST_OK(sem_poisson_create(cut, P, SEM_CG, kind_neu, NULL, &fresh, &err), err);
-    SQ_TEST_OK(sem_poisson_create_like(src, cut, kind_neu, NULL, &like, &err), err);
-    const sem_poisson_work ws = sem_poisson_work_done(src), wf = sem_poisson_work_done(fresh),
-                           wl = sem_poisson_work_done(like);
+    const sem_poisson_work ws = sem_poisson_work_done(src);
+    /* refused: a mesh with other elements, src kept */
+    sem_poisson *bad = NULL, *dg = NULL;
+    fails += sq_check_int("other mesh", "status",
+                          sem_poisson_create_like(&src, other, kind_neu, NULL, &bad, &err),
+                          SQ_ERR_USAGE);
+    fails += sq_check_int("other mesh", "source kept", src != NULL, 1);
+    SQ_TEST_OK(sem_poisson_create_like(&src, cut, kind_neu, NULL, &like, &err), err);
+    fails += sq_check_int("like", "source taken over", src == NULL, 1);
+    const sem_poisson_work wf = sem_poisson_work_done(fresh), wl = sem_poisson_work_done(like);
     fails += sq_check_int("source", "element matrices", ws.element_matrices, disc->ntris);
     fails += sq_check_int("source", "factorizations", ws.factorizations, 1);
     fails += sq_check_int("fresh", "element matrices", wf.element_matrices, cut->ntris);
@@ -96,14 +105,10 @@ int main(void)
     }
     fails += sq_check_int("evaluator", "values differing with the uncut mesh's locator", differ, 0);
 
-    /* refusals */
-    sem_poisson *bad = NULL, *dg = NULL;
-    fails += sq_check_int("other mesh", "status",
-                          sem_poisson_create_like(src, other, kind_neu, NULL, &bad, &err),
-                          SQ_ERR_USAGE);
+    /* refused: a DG source */
     SQ_TEST_OK(sem_poisson_create(disc, 2, SEM_DG, kind_neu, NULL, &dg, &err), err);
     fails += sq_check_int("DG source", "status",
-                          sem_poisson_create_like(dg, cut, kind_neu, NULL, &bad, &err), SQ_ERR_USAGE);
+                          sem_poisson_create_like(&dg, cut, kind_neu, NULL, &bad, &err), SQ_ERR_USAGE);
     fails += sq_check_int("DG", "factorizations", sem_poisson_work_done(dg).factorizations, 1);
     fails += sq_check_int("DG", "element matrices", sem_poisson_work_done(dg).element_matrices,
                           disc->ntris);

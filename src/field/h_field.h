@@ -35,7 +35,7 @@ typedef struct {
     double *xy; /* 2*npoints: singular points X_j */
     double *c;  /* npoints: c_j = (π/2)(4 − V_j) */
     int ncorner_sources; /* corners with s_i != 0 */
-    sem_poisson *solver;     /* H_r's, whose element matrices θ's solver copies (NULL: released) */
+    sem_poisson *solver;     /* H_r's, whose element matrices θ's solver takes (NULL after) */
     sem_field *hr;           /* regular part H_r (zero mean) */
     sem_field_evaluator *ev; /* on hr */
     double shift;            /* constant in H (zero mean) */

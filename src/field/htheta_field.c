@@ -236,15 +236,13 @@ sq_status sq_htheta_compute(const cad_face *face, const sq_pattern *pattern,
     if ((st = sq_h_field_solve(face, &out->info, m, out->loc, opt->order, np, pxy, val,
                                out->balance.quads, &out->h, err)) != SQ_OK)
         goto done;
+    const sem_poisson_work wh = sem_poisson_work_done(out->h.solver);
+    /* θ's solver takes H's element matrices and frees the rest */
     if ((st = sq_theta_field_solve(face, m, out->loc, &out->h, out->vloops, out->nloops, sing,
                                    &out->theta, err)) != SQ_OK)
         goto done;
-    {
-        const sem_poisson_work wh = sem_poisson_work_done(out->h.solver), wt = out->theta.work;
-        out->work = (sem_poisson_work){wh.element_matrices + wt.element_matrices,
-                                       wh.factorizations + wt.factorizations};
-    }
-    sem_poisson_free(&out->h.solver); /* θ's solver had what it needed */
+    out->work = (sem_poisson_work){wh.element_matrices + out->theta.work.element_matrices,
+                                   wh.factorizations + out->theta.work.factorizations};
     for (int j = 0; j < np; j++)
         out->points[j].jump = sq_theta_jump_around_vertex(&out->theta, sing[j]);
     st = loop_checks(face, out, err);

@@ -89,7 +89,7 @@ static void edge_point(int k, double u, double rs[2])
 }
 
 sq_status sq_theta_field_solve(const cad_face *face, const sem_tri_mesh *mesh,
-                               const sem_locator *loc, const sq_h_field *h, const int *loops,
+                               const sem_locator *loc, sq_h_field *h, const int *loops,
                                int nloops, const int *sing, sq_theta_field *out, sq_error *err)
 {
     memset(out, 0, sizeof *out);
@@ -139,7 +139,7 @@ sq_status sq_theta_field_solve(const cad_face *face, const sem_tri_mesh *mesh,
         goto done;
     }
     /* step 2, with H_r's element matrices: the cut mesh has its elements */
-    if ((st = sem_poisson_create_like(h->solver, cm, all_neumann, NULL, &solver, err)) != SQ_OK)
+    if ((st = sem_poisson_create_like(&h->solver, cm, all_neumann, NULL, &solver, err)) != SQ_OK)
         goto done;
     out->ndofs = sem_poisson_ndofs(solver);
     out->work = sem_poisson_work_done(solver);

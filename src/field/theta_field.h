@@ -39,9 +39,10 @@ typedef struct {
 } sq_theta_field;
 
 /* loops: sq_mesh_vertex_loops of mesh; sing[h->npoints]: mesh vertex of
- * each singular point; loc: locator of mesh. */
+ * each singular point; loc: locator of mesh.  H's solver (h->solver) is
+ * taken over by θ's and freed: NULL after. */
 sq_status sq_theta_field_solve(const cad_face *face, const sem_tri_mesh *mesh,
-                               const sem_locator *loc, const sq_h_field *h, const int *loops,
+                               const sem_locator *loc, sq_h_field *h, const int *loops,
                                int nloops, const int *sing, sq_theta_field *out, sq_error *err);
 void sq_theta_field_free(sq_theta_field *t); /* frees, zeroes the struct */
 
