@@ -97,7 +97,6 @@ static void json_layout_keys(sq_json *j, const sq_layout_result *r)
     sq_json_key_int(j, "iterations", s->iterations);
     /* only on the all-quad last resort: other reports keep their keys */
     if (s->all_quad_splits > 0) sq_json_key_int(j, "all_quad_splits", s->all_quad_splits);
-    if (s->overlaps_merged > 0) sq_json_key_int(j, "overlaps_merged", s->overlaps_merged);
     /* the pattern's route (layout_pipeline.h, docs/layout.md) */
     const sq_layout_report *rep = &r->report;
     static const char *pattern[] = {"natural", "pairs-cancelled", "gauss-bonnet-minimal",
@@ -252,8 +251,7 @@ sq_status sq_write_layout_svg(const char *path, const sq_layout_result *r, sq_er
                {st->crossings_split, "crossings"},
                {st->straight_stems, "straight stems"},
                {st->separatrices_removed, "separatrices removed"},
-               {st->all_quad_splits, "all-quad splits"},
-               {st->overlaps_merged, "overlaps merged"}};
+               {st->all_quad_splits, "all-quad splits"}};
     char caption[320];
     int len = snprintf(
         caption, sizeof caption,

@@ -153,8 +153,6 @@ typedef struct {
     int iterations;      /* correction passes */
     int all_quad_splits; /* patches split by the all-quad last resort
                             (sq_layout_all_quad); 0 on a valid layout */
-    int overlaps_merged; /* lines along one another made one (the last
-                            resort's first step, repair_overlap.c) */
 } sq_layout_stats;
 
 typedef struct {

@@ -358,12 +358,7 @@ static sq_status split_all(lay_repair *r, sq_error *err)
         }
         free(used);
         r->work += (double)lay_set_points(&L->seps);
-        /* a split laid along a line already there (a bent path out and
-         * back, two spokes on one line): merged, the spikes left removed */
-        int merges = 0;
-        if (st == SQ_OK) st = lay_set_merge_overlaps(r, &merges, err);
-        if (st == SQ_OK)
-            st = merges ? remove_dangling(r, err) : lay_graph_build(L, r->face, r->info, err);
+        if (st == SQ_OK) st = lay_graph_build(L, r->face, r->info, err);
     }
     return st;
 }
@@ -375,8 +370,6 @@ sq_status sq_layout_all_quad(const cad_face *face, const sq_face_info *info, sq_
     sq_status st = lay_repair_begin(&r, L, face, info, NULL, NULL, err);
     r.all_quad = 1;
     L->inserted_corner_tol = SQ_LAYOUT_ALLQUAD_CORNER_TOL_DEG * M_PI / 180.0;
-    int merges = 0;
-    if (st == SQ_OK) st = lay_set_merge_overlaps(&r, &merges, err);
     if (st == SQ_OK) st = lay_set_untangle(&r, err);
     if (st == SQ_OK) st = remove_dangling(&r, err);
     if (st == SQ_OK) st = split_all(&r, err);

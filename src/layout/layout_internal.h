@@ -16,20 +16,6 @@ typedef struct {
     double cosang;     /* |cos| of the angle between the two segments */
 } lay_hit;
 
-/* A run of at most LAY_CHUNK segments of one separatrix (j0..j1-1) and
- * its bounding box grown by a distance: pairs of chunks whose boxes are
- * apart are skipped by the searches between separatrices. */
-#define LAY_CHUNK 16
-typedef struct {
-    int sep, j0, j1;
-    double bb[4];
-} lay_chunk;
-
-/* The chunks of every separatrix of set, boxes grown by `grow`; *ch
- * malloc'ed. */
-sq_status lay_chunks(const sq_separatrix_set *set, double grow, lay_chunk **ch, int *nch,
-                     sq_error *err);
-
 /* All intersections between the separatrices of set (adjacent segments of
  * one polyline excluded); tol: coincidence distance.  *hits malloc'ed. */
 sq_status lay_intersections(const sq_separatrix_set *set, double tol, lay_hit **hits, int *nhits,

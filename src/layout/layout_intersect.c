@@ -6,35 +6,12 @@
 #include <math.h>
 #include <stdlib.h>
 
-sq_status lay_chunks(const sq_separatrix_set *set, double grow, lay_chunk **out, int *nout,
-                     sq_error *err)
-{
-    int nch = 0, cap = 0;
-    lay_chunk *ch = NULL;
-    for (int i = 0; i < set->n; i++) {
-        const sq_separatrix *s = &set->s[i];
-        for (int j0 = 0; j0 + 1 < s->npts; j0 += LAY_CHUNK) {
-            int j1 = j0 + LAY_CHUNK < s->npts - 1 ? j0 + LAY_CHUNK : s->npts - 1;
-            lay_chunk c = {i, j0, j1, {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
-            for (int j = j0; j <= j1; j++) {
-                c.bb[0] = fmin(c.bb[0], s->xy[2 * j] - grow);
-                c.bb[1] = fmin(c.bb[1], s->xy[2 * j + 1] - grow);
-                c.bb[2] = fmax(c.bb[2], s->xy[2 * j] + grow);
-                c.bb[3] = fmax(c.bb[3], s->xy[2 * j + 1] + grow);
-            }
-            lay_chunk *q = lay_grow(ch, &cap, nch + 1, sizeof *ch);
-            if (!q) {
-                free(ch);
-                return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-            }
-            ch = q;
-            ch[nch++] = c;
-        }
-    }
-    *out = ch;
-    *nout = nch;
-    return SQ_OK;
-}
+#define CHUNK 16
+
+typedef struct {
+    int sep, j0, j1; /* segments j0..j1-1 */
+    double bb[4];
+} chunk;
 
 static sq_status hit_push(lay_hit **h, int *n, int *cap, lay_hit v, sq_error *err)
 {
@@ -61,15 +38,34 @@ sq_status lay_intersections(const sq_separatrix_set *set, double tol, lay_hit **
 {
     *hits = NULL;
     *nhits = 0;
-    int nch = 0;
-    lay_chunk *ch = NULL;
-    SQ_TRY(lay_chunks(set, tol, &ch, &nch, err));
+    int nch = 0, cap = 0;
+    chunk *ch = NULL;
+    for (int i = 0; i < set->n; i++) {
+        const sq_separatrix *s = &set->s[i];
+        for (int j0 = 0; j0 + 1 < s->npts; j0 += CHUNK) {
+            int j1 = j0 + CHUNK < s->npts - 1 ? j0 + CHUNK : s->npts - 1;
+            chunk c = {i, j0, j1, {HUGE_VAL, HUGE_VAL, -HUGE_VAL, -HUGE_VAL}};
+            for (int j = j0; j <= j1; j++) {
+                c.bb[0] = fmin(c.bb[0], s->xy[2 * j] - tol);
+                c.bb[1] = fmin(c.bb[1], s->xy[2 * j + 1] - tol);
+                c.bb[2] = fmax(c.bb[2], s->xy[2 * j] + tol);
+                c.bb[3] = fmax(c.bb[3], s->xy[2 * j + 1] + tol);
+            }
+            chunk *q = lay_grow(ch, &cap, nch + 1, sizeof *ch);
+            if (!q) {
+                free(ch);
+                return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+            }
+            ch = q;
+            ch[nch++] = c;
+        }
+    }
     int hcap = 0;
     sq_status st = SQ_OK;
     const double eps = 1e-12;
     for (int ci = 0; ci < nch && st == SQ_OK; ci++)
         for (int cj = ci; cj < nch && st == SQ_OK; cj++) {
-            const lay_chunk *A = &ch[ci], *B = &ch[cj];
+            const chunk *A = &ch[ci], *B = &ch[cj];
             if (A->bb[0] > B->bb[2] || B->bb[0] > A->bb[2] || A->bb[1] > B->bb[3] ||
                 B->bb[1] > A->bb[3])
                 continue;

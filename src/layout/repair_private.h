@@ -59,8 +59,6 @@ sq_status lay_repair_begin(lay_repair *r, sq_layout *L, const cad_face *face,
 void lay_repair_end(lay_repair *r);
 
 /* Points of the separatrix set (repair_set.c). */
-/* Do two separatrix ends meet at one node (feet within tol)? (repair_set.c) */
-int lay_same_end(const sq_sep_end *a, const sq_sep_end *b, double tol);
 long lay_set_points(const sq_separatrix_set *S);
 
 /* A repair line (repair_line.c): its points and where it ended. */
@@ -166,10 +164,6 @@ sq_status lay_set_repair(lay_repair *r, int *done, sq_error *err);        /* rep
 /* the all-quad last resort's (repair_set.c): every crossing of the set
  * made a node, found once; the pieces that end open removed */
 sq_status lay_set_untangle(lay_repair *r, sq_error *err);
-/* the all-quad last resort's (repair_overlap.c): where two separatrices,
- * or two passages of one, run along each other, the later one's part
- * removed, its pieces ending on the kept one; *merges how many */
-sq_status lay_set_merge_overlaps(lay_repair *r, int *merges, sq_error *err);
 sq_status lay_cut_annulus(lay_repair *r, int *done, sq_error *err);       /* repair_annulus.c */
 sq_status lay_split_valence2(lay_repair *r, int *done, sq_error *err);    /* repair_triangle.c */
 sq_status lay_split_triangle(lay_repair *r, int *done, sq_error *err);    /* repair_triangle.c */

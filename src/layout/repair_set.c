@@ -28,7 +28,7 @@ static sq_status crossings(lay_repair *r, sq_error *err)
     return SQ_OK;
 }
 
-int lay_same_end(const sq_sep_end *a, const sq_sep_end *b, double tol)
+static int same_end(const sq_sep_end *a, const sq_sep_end *b, double tol)
 {
     if (a->kind != b->kind || a->id != b->id) return 0;
     if (a->kind == SQ_END_BOUNDARY) return fabs(a->s - b->s) <= tol;
@@ -45,8 +45,8 @@ static sq_status remove_duplicate(lay_repair *r, int *done, sq_error *err)
     for (int a = 0; a < S->n; a++)
         for (int b = a + 1; b < S->n; b++) {
             const sq_separatrix *A = &S->s[a], *B = &S->s[b];
-            int same = (lay_same_end(&A->start, &B->start, tol) && lay_same_end(&A->end, &B->end, tol)) ||
-                       (lay_same_end(&A->start, &B->end, tol) && lay_same_end(&A->end, &B->start, tol));
+            int same = (same_end(&A->start, &B->start, tol) && same_end(&A->end, &B->end, tol)) ||
+                       (same_end(&A->start, &B->end, tol) && same_end(&A->end, &B->start, tol));
             if (!same) continue;
             /* stop at the first point farther than `close` (most pairs
              * with the same ends are not duplicates) */
