@@ -1,20 +1,19 @@
 #!/usr/bin/python3
-"""t704: the faces of a domain meshed on threads (`--threads N`,
-docs/domains.md "Threads") give the serial run's output, byte for byte.
+"""t704: a domain meshed with `--threads N` gives the serial run's output,
+byte for byte (docs/domains.md "Threads": the faces run one after another,
+the threads go to each face's refinement, quality pass and MSH text).
 
 Domains built here with Gmsh's OCC kernel (tests/domain_faces.py): ring4
 (four faces sharing four edges; with --periodic auto its radial sides are
 pairs: the layout road with chord counts agreed in rounds, and the split
 road with --road split), three_row (three rectangles: the layout road),
-circle_square (a disc in a square) and grid_holes (four squares with a hole
-each): the layout road's rounds fail on the last two, the split road meshes
-them.  Each is meshed with --threads 1, 2 and 3 at order 4, and:
+circle_square (a disc in a square: the layout road, the disc's vertices
+slid onto the square's) and grid_holes (four squares with a hole each).  Each is meshed with --threads 1, 2 and 3 at order 4, and:
 
   - the MSH files are byte-identical;
   - the reports are identical but for their timings_s;
   - the log (stderr) has the same lines in the same order once the times
-    in them, "(0.123 s)", are blanked: each face's lines are kept while
-    the faces run and said in face order afterwards;
+    in them, "(0.123 s)", are blanked;
   - the mesh is a real one: Gmsh's reader (tests/msh_quad_stats.py) finds
     the report's quads, no triangle, none inverted, no two corners closer
     than 1e-9 of the mesh's diameter (conforming: a shared curve's nodes
