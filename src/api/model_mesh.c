@@ -78,40 +78,28 @@ static sq_status faces_load(const sq_model *m, const int *faces, int n, const sq
     return SQ_OK;
 }
 
-/* Face k's held edges (its shared curves), allocated; NULL: out of memory. */
-static int *held_edges(const sq_domain *d, const faces_open *f, int k)
-{
-    int ne = cad_face_num_edges(f->cad[k]);
-    int *held = calloc((size_t)ne + 1, sizeof(int));
-    for (int e = 0; held && e < ne; e++) held[e] = d->curves[d->curve_of[k][e]].face[1] >= 0;
-    return held;
-}
-
-/* Face k's mesh h taken into f->q[k] (h freed), its road noted. */
-static void take_face(faces_open *f, int k, sq_mesh **h, const char **road)
-{
-    road[k] = !strcmp((*h)->road.name, "split") ? "split" : "layout";
-    sq_quad_mesh_free(&f->q[k]);
-    f->q[k] = (*h)->q;
-    (*h)->q = NULL;
-    sq_mesh_free(h);
-}
-
 /* Face k by its own roads (as o says) at the domain's size, the vertices
- * on its shared curves held, at least minc[k][e] chords on its edges, its
+ * on its shared curves held, at least minc[e] chords on its edges, its
  * vertices on edge e slid onto ep[e]; its mesh into f->q[k]. */
 static sq_status mesh_one(const sq_model *m, const sq_domain *d, faces_open *f, int k,
                           const sq_options *o, const int *minc, const sq_edge_points *ep,
                           const char **road, sq_error *err)
 {
-    int *held = held_edges(d, f, k);
+    int ne = cad_face_num_edges(f->cad[k]);
+    int *held = calloc((size_t)ne + 1, sizeof(int));
     if (!held) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int e = 0; e < ne; e++) held[e] = d->curves[d->curve_of[k][e]].face[1] >= 0;
     sq_mesh *h = NULL;
     sq_status st = sq_api_face_mesh(m, f->face[k].index, o,
                                     sq_domain_face_shares(d, k) ? held : NULL, minc, ep, &h, err);
     free(held);
-    if (st == SQ_OK) take_face(f, k, &h, road);
-    return st;
+    if (st != SQ_OK) return st;
+    road[k] = !strcmp(h->road.name, "split") ? "split" : "layout";
+    sq_quad_mesh_free(&f->q[k]);
+    f->q[k] = h->q;
+    h->q = NULL;
+    sq_mesh_free(&h);
+    return SQ_OK;
 }
 
 /* The faces with (shares 1) or without (0) a shared curve, each by

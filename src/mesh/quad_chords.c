@@ -276,21 +276,6 @@ static sq_status equal_totals(const sq_layout *L, const double *len, double size
     return st;
 }
 
-/* What a domain's faces ask of CAD edges the layout splits into pieces:
- * the sum over such edges of min_chords beyond their totals (an edge of
- * one piece takes its count directly, in qm_quantize). */
-static long min_deficit(const sq_layout *L, const int *minc, const int *n)
-{
-    long d = 0;
-    for (int e = 0; e < L->nedges; e++) {
-        int c = L->edges[e].cad_edge, first = c >= 0;
-        for (int f = 0; first && f < e; f++) first = L->edges[f].cad_edge != c;
-        long total = first ? cad_edge_count(L, c, n) : 0;
-        if (first && total < minc[c]) d += minc[c] - total;
-    }
-    return d;
-}
-
 /* Faces of a domain (docs/domains.md): a shared curve split by this
  * face's layout into pieces still carries the count the face across asks
  * (min_chords), so their meshes can meet on it.  While some such curve
@@ -302,7 +287,7 @@ static sq_status min_totals(const sq_layout *L, const double *len, double size,
                             const double *need, const int *partner, const int *minc, int *n,
                             sq_error *err)
 {
-    while (min_deficit(L, minc, n) > 0) {
+    for (;;) {
         int best = -1;
         double coarsest = -1.0;
         for (int e = 0; e < L->nedges; e++) {
@@ -310,10 +295,10 @@ static sq_status min_totals(const sq_layout *L, const double *len, double size,
             if (c < 0 || cad_edge_count(L, c, n) >= minc[c]) continue;
             if (len[e] / n[e] > coarsest) coarsest = len[e] / n[e], best = e;
         }
+        if (best < 0) return SQ_OK; /* every curve carries what it is asked */
         n[best]++;
         SQ_TRY(settle(L, len, size, need, partner, n, err));
     }
-    return SQ_OK;
 }
 
 /* Design 1: chord quantization. */
