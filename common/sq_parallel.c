@@ -39,6 +39,14 @@ int sq_threads_resolve(int threads)
     return n < 1 ? 1 : n < PAR_MAX_THREADS ? (int)n : PAR_MAX_THREADS;
 }
 
+int sq_threads_nested(int threads, long n, int *inner)
+{
+    int t = sq_threads_resolve(threads);
+    int outer = n < 1 ? 1 : n < t ? (int)n : t;
+    *inner = t / outer;
+    return outer;
+}
+
 sq_status sq_parallel_for(int threads, long n, long grain, sq_range_fn fn, void *ctx,
                           sq_error *err)
 {

@@ -16,6 +16,13 @@ typedef sq_status (*sq_range_fn)(void *ctx, long begin, long end, sq_error *err)
  * the processors online (at least 1). */
 int sq_threads_resolve(int threads);
 
+/* A request of `threads` (resolved as above) shared by n items that run
+ * at once and have parallel loops of their own (the faces of a domain):
+ * the threads over the items (at most n, at least 1), and in *inner the
+ * threads each item's own loops take, so that no more than the request
+ * run in all. */
+int sq_threads_nested(int threads, long n, int *inner);
+
 /* fn over [0, n) on `threads` threads (resolved as above), in ranges of
  * at least `grain` items (fewer threads when n is small; one range runs
  * on the calling thread).  The status of the failing range with the

@@ -245,10 +245,13 @@ typedef struct {
     void *progress_data;
 
     /* Large meshes (appended: fields above keep their places) */
-    int threads; /* threads for a large mesh's refinement, the quality
-                    pass and the MSH text's formatting; 0: the processors
-                    online (default).  Files are byte-identical for every
-                    count. */
+    int threads; /* threads for the faces of a domain (sq_model_mesh:
+                    each face's field, layout and mesh; the log's lines
+                    in face order, progress events only when one face
+                    runs at a time), a large mesh's refinement, the
+                    quality pass and the MSH text's formatting; 0: the
+                    processors online (default).  Files are
+                    byte-identical for every count. */
     /* The relaxation's largest mesh (default SQ_RELAX_MAX_QUADS): a layout
      * road mesh of more quads is relaxed with its chords quantized at 2^k
      * times the size, the least k giving at most this many quads, and its

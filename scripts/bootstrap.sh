@@ -22,7 +22,7 @@ libocct-data-exchange-dev \
 libcgal-dev libgmp-dev libmpfr-dev \
 libgsl-dev liblapacke-dev zlib1g-dev libopenblas-dev libopenblas-serial-dev libsuitesparse-dev \
 librsvg2-bin \
-python3-gmsh gmsh python3-numpy python3-meshio parallel"
+python3-gmsh gmsh python3-numpy python3-meshio python3-vtk9 parallel"
 case "${1:-}" in
     "") ;;
     --bench) PKGS="$PKGS $BENCH_PKGS" ;;

@@ -12,6 +12,7 @@
  *   K_ij = sum_q w_q / |J| (grad_rs psi_i)^T adj(J^T J) grad_rs psi_j,
  * one dgemm per curved element; straight elements combine three
  * precomputed reference matrices. */
+#include "lib_lock.h"
 #include "cg_basis.h"
 #include "cg_space.h"
 #include "gauss.h"
@@ -224,9 +225,11 @@ static sq_status cg_element(const cg_state *c, int t, const double *Sref, double
         wj[k] = c->quad->w[k] * det;
     }
     /* K = [Br; Bs]^T [Dr; Ds] */
+    sem_lib_lock();
     cblas_dgemm(CblasRowMajor, CblasTrans, CblasNoTrans, n, n, 2 * nq, 1.0, c->BrBs, n, D, n, 0.0,
                 K, n);
     cblas_dgemv(CblasRowMajor, CblasTrans, nq, n, 1.0, c->B, n, wj, 1, 0.0, mv, 1);
+    sem_lib_unlock();
     return SQ_OK;
 }
 
@@ -319,7 +322,10 @@ static sq_status cg_tables(cg_state *c, cg_state *src, sq_error *err)
             for (int i = 0; i < ne; ++i)
                 for (int j = 0; j < ne; ++j) c->Mf[i * ne + j] += c->we[k] * f[i] * f[j];
         }
-        if (LAPACKE_dpotrf(LAPACK_ROW_MAJOR, 'L', ne, c->Mf, ne) != 0)
+        sem_lib_lock();
+        const lapack_int info = LAPACKE_dpotrf(LAPACK_ROW_MAJOR, 'L', ne, c->Mf, ne);
+        sem_lib_unlock();
+        if (info != 0)
             return SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_cg: edge mass matrix not SPD (P = %d)", P);
     }
     return SQ_OK;
@@ -436,14 +442,19 @@ static sq_status cg_elements(cg_state *c, sq_error *err)
             memcpy(L + i * ni, K + (size_t)(nb + i) * n + nb, sizeof(double) * ni);
             memcpy(W + i * nb, K + (size_t)(nb + i) * n, sizeof(double) * nb);
         }
-        if (LAPACKE_dpotrf(LAPACK_ROW_MAJOR, 'L', ni, L, ni) != 0) {
+        sem_lib_lock();
+        const lapack_int info = LAPACKE_dpotrf(LAPACK_ROW_MAJOR, 'L', ni, L, ni);
+        if (info == 0) {
+            LAPACKE_dpotrs(LAPACK_ROW_MAJOR, 'L', ni, nb, L, ni, W, nb);
+            cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, nb, nb, ni, -1.0, K + nb, n, W,
+                        nb, 1.0, S, nb);
+        }
+        sem_lib_unlock();
+        if (info != 0) {
             st = SQ_FAIL(err, SQ_ERR_INTERNAL,
                          "poisson_cg_create: interior block of element %d not SPD", t);
             break;
         }
-        LAPACKE_dpotrs(LAPACK_ROW_MAJOR, 'L', ni, nb, L, ni, W, nb);
-        cblas_dgemm(CblasRowMajor, CblasNoTrans, CblasNoTrans, nb, nb, ni, -1.0, K + nb, n, W, nb,
-                    1.0, S, nb);
     }
 done:
     free(Sref);
@@ -652,7 +663,11 @@ static sq_status cg_dirichlet(const cg_state *c, const sem_poisson_data *data, d
                         rhs[p - 1] += c->we[q] * r * 0.25 * (1 - tq) * (1 + tq) *
                                       sem_jacobi(p - 1, 1.0, 1.0, tq, NULL);
                 }
-                if (LAPACKE_dpotrs(LAPACK_ROW_MAJOR, 'L', ne, 1, c->Mf, ne, rhs, 1) != 0)
+                sem_lib_lock();
+                const lapack_int info =
+                    LAPACKE_dpotrs(LAPACK_ROW_MAJOR, 'L', ne, 1, c->Mf, ne, rhs, 1);
+                sem_lib_unlock();
+                if (info != 0)
                     return SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_cg: edge projection failed");
                 for (int p = 1; p <= ne; ++p) {
                     const int i = sem_cg_edge_mode(P, k, p);
@@ -694,7 +709,9 @@ static sq_status cg_solve(void *state, const sem_poisson_data *data, sem_field *
                 fq[k] = c->quad->w[k] * det * fv;
                 scale += fabs(fq[k]);
             }
+            sem_lib_lock();
             cblas_dgemv(CblasRowMajor, CblasTrans, nq, n, 1.0, c->B, n, fq, 1, 0.0, b, 1);
+            sem_lib_unlock();
         }
         if (!data->g) continue;
         for (int k = 0; k < 3; ++k) {
@@ -743,9 +760,12 @@ static sq_status cg_solve(void *state, const sem_poisson_data *data, sem_field *
         const long *map = sp->bmap + (size_t)t * nb;
         const signed char *sg = sp->bsign + (size_t)t * nb;
         /* b_b - Kbi Kii^-1 b_i = b_b - W^T b_i */
-        if (ni > 0)
+        if (ni > 0) {
+            sem_lib_lock();
             cblas_dgemv(CblasRowMajor, CblasTrans, ni, nb, -1.0, c->W + (size_t)t * ni * nb, nb,
                         b + nb, 1, 1.0, b, 1);
+            sem_lib_unlock();
+        }
         double uloc[3 * SEM_MAX_ORDER];
         int has_dir = 0;
         for (int j = 0; j < nb; ++j) {
@@ -770,17 +790,18 @@ static sq_status cg_solve(void *state, const sem_poisson_data *data, sem_field *
         double *b = bl + (size_t)t * n; /* becomes the local solution */
         const long *map = sp->bmap + (size_t)t * nb;
         const signed char *sg = sp->bsign + (size_t)t * nb;
-        if (ni > 0) { /* u_i = Kii^-1 b_i - W u_b (b_i is still the raw interior load) */
-            LAPACKE_dpotrs(LAPACK_ROW_MAJOR, 'L', ni, 1, c->Lii + (size_t)t * ni * ni, ni, b + nb, 1);
-        }
         for (int j = 0; j < nb; ++j) {
             const long g = c->gfree[map[j]];
             b[j] = sg[j] * (g < 0 ? ud[-1 - g] : F[g]);
         }
-        if (ni > 0)
+        sem_lib_lock();
+        if (ni > 0) { /* u_i = Kii^-1 b_i - W u_b (b_i is still the raw interior load) */
+            LAPACKE_dpotrs(LAPACK_ROW_MAJOR, 'L', ni, 1, c->Lii + (size_t)t * ni * ni, ni, b + nb, 1);
             cblas_dgemv(CblasRowMajor, CblasNoTrans, ni, nb, -1.0, c->W + (size_t)t * ni * nb, nb, b,
                         1, 1.0, b + nb, 1);
+        }
         if (c->pure_neumann) mean += cblas_ddot(n, c->mloc + (size_t)t * n, 1, b, 1);
+        sem_lib_unlock();
     }
     mean /= c->area;
     (void)P;
@@ -789,8 +810,10 @@ static sq_status cg_solve(void *state, const sem_poisson_data *data, sem_field *
         if (c->pure_neumann) /* the constant is the sum of the vertex modes */
             for (int k = 0; k < 3; ++k) b[k] -= mean;
         /* d_m = sum_i C[i][m] u_i */
+        sem_lib_lock();
         cblas_dgemv(CblasRowMajor, CblasTrans, n, n, 1.0, c->basis->C, n, b, 1, 0.0,
                     u->coef + (size_t)t * n, 1);
+        sem_lib_unlock();
     }
 done:
     free(bl);

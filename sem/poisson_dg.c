@@ -29,6 +29,7 @@
  * of the data, is removed as a uniform source), the first unknown (mode 0
  * of element 0, never zero in the kernel vector) is pinned, which keeps the
  * matrix sparse and SPD, and the mean is removed after the solve. */
+#include "lib_lock.h"
 #include "dg_modal.h"
 #include "gauss.h"
 #include "poisson_impl.h"
@@ -231,8 +232,10 @@ static sq_status create_matrix(dg_state *S, sq_error *err)
 static void gemm_tn(int nm, int ne, double alpha, const double *A, const double *B, double beta,
                     double *C)
 {
+    sem_lib_lock();
     cblas_dgemm(CblasRowMajor, CblasTrans, CblasNoTrans, nm, nm, ne, alpha, A, nm, B, nm, beta, C,
                 nm);
+    sem_lib_unlock();
 }
 
 /* out = diag(W) in (rows of ne x nm). */
@@ -445,8 +448,10 @@ sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
         S->area += a;
         /* dgemm rather than dsyrk: OpenBLAS's syrk is far slower for these
          * tall-skinny shapes */
+        sem_lib_lock();
         cblas_dgemm(CblasRowMajor, CblasTrans, CblasNoTrans, nm, nm, 2 * nq, 1.0, B, nm, B, nm, 0.0,
                     K, nm);
+        sem_lib_unlock();
         S->work.element_matrices++;
         if ((st = scatter(S, K, e, e, err)) != SQ_OK) goto fail;
     }

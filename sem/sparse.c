@@ -6,6 +6,8 @@
  * global state, and CHOLMOD is told not to print. */
 #include "sparse.h"
 
+#include "lib_lock.h"
+
 #include <cholmod.h>
 #include <stdlib.h>
 #include <string.h>
@@ -401,8 +403,15 @@ sq_status sem_sparse_factor(sem_sparse *a, sq_error *err)
         a->A = A;
     }
     a->assembling = 0;
-    if (!a->L) SQ_TRY(analyze(a, err));
+    if (!a->L) {
+        sem_lib_lock(); /* nested dissection runs METIS (lib_lock.h) */
+        const sq_status st = analyze(a, err);
+        sem_lib_unlock();
+        SQ_TRY(st);
+    }
+    sem_lib_lock(); /* CHOLMOD's supernodal factorization calls BLAS and LAPACK */
     const int ok = cholmod_l_factorize(a->A, a->L, &a->cc);
+    sem_lib_unlock();
     if (!ok || a->cc.status == CHOLMOD_NOT_POSDEF || a->L->minor < a->L->n) {
         const long minor = (long)a->L->minor;
         const int status = a->cc.status;
@@ -445,7 +454,9 @@ sq_status sem_sparse_solve(sem_sparse *a, const double *b, double *x, sq_error *
     if (!a || !a->L || a->assembling)
         return SQ_FAIL(err, SQ_ERR_USAGE, "sparse_solve: matrix not factored");
     memcpy(a->b->x, b, sizeof(double) * (size_t)a->n);
+    sem_lib_lock();
     cholmod_dense *X = cholmod_l_solve(CHOLMOD_A, a->L, a->b, &a->cc);
+    sem_lib_unlock();
     if (!X)
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_solve: CHOLMOD solve failed (status %d)",
                        a->cc.status);
@@ -489,7 +500,10 @@ sq_status sem_sparse_pcg(sem_sparse *a, const double *b, double *x, double rtol,
             break;
         }
         if (it == maxit) break;
-        if (!cholmod_l_solve2(CHOLMOD_A, a->L, R, NULL, &Z, NULL, &Y, &E, &a->cc)) {
+        sem_lib_lock();
+        const int solved = cholmod_l_solve2(CHOLMOD_A, a->L, R, NULL, &Z, NULL, &Y, &E, &a->cc);
+        sem_lib_unlock();
+        if (!solved) {
             st = SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_pcg: CHOLMOD solve failed (status %d)",
                          a->cc.status);
             break;

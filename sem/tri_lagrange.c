@@ -8,6 +8,7 @@
  * reassociating sums. */
 #include "tri_lagrange.h"
 
+#include "lib_lock.h"
 #include "gauss.h"
 #include "tri_basis.h"
 #include "tri_nodes.h"
@@ -52,8 +53,10 @@ sq_status sem_tri_lagrange_create(int P, sem_tri_lagrange **out, sq_error *err)
 
     /* Row-major V: row k holds phi_m(x_k). */
     for (int k = 0; k < n; ++k) sem_tri_dubiner(P, L->rs[2 * k], L->rs[2 * k + 1], V + (size_t)k * n, NULL, NULL);
+    sem_lib_lock();
     lapack_int info = LAPACKE_dgetrf(LAPACK_ROW_MAJOR, n, n, V, n, ipiv);
     if (info == 0) info = LAPACKE_dgetri(LAPACK_ROW_MAJOR, n, V, n, ipiv);
+    sem_lib_unlock();
     if (info != 0) {
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "tri_lagrange_create: Vandermonde inversion failed (info %d, P=%d)",
                      (int)info, P);

@@ -21,7 +21,8 @@ holding a space and one 'NONE', the exporters' "no name") and each face
   - `--names` with `0 inlet` renames edge 0 and leaves the others' file names;
   - the Nektar++ XML carries the names as composite NAMEs;
   - in the three-face domain each face is a surface group named as the
-    file names the face (plate_N), in the MSH and the Nektar++ XML.
+    file names the face (plate_N), in the MSH and the Nektar++ XML, and in
+    the VTU (read by VTK's reader) the field data name each cell's face.
 usage: t636-step-names.py SEMQUAD DOMAIN_FACES_PY"""
 import math
 import os
@@ -32,6 +33,7 @@ import tempfile
 
 try:
     import gmsh
+    import vtk
 except ImportError:
     sys.exit(77)
 
@@ -156,6 +158,42 @@ def check(label, step, segs, x_max, nbottom, tmp):
         for name in plates:
             if 'NAME="%s"> Q[' % name not in text:
                 fails.append("%s: Nektar++ XML without the face composite NAME %s" % (label, name))
+        check_vtu(label, step, faces, x_max, tmp)
+
+
+def check_vtu(label, step, faces, x_max, tmp):
+    """The VTU read by VTK's own reader: every cell's `face` number named
+    plate_k by the field data, and that face's cells inside its x range
+    (to the resampling's round-off, 1e-12 of the size)."""
+    vtu = os.path.join(tmp, label + ".vtu")
+    r = run(["mesh", step, "--order", "3", "--size", "0.25", "-o", vtu, "-q"])
+    if r.returncode:
+        fails.append("%s: VTU: exit %d: %s" % (label, r.returncode, r.stderr.strip()))
+        return
+    rd = vtk.vtkXMLUnstructuredGridReader()
+    rd.SetFileName(vtu)
+    rd.Update()
+    g = rd.GetOutput()
+    fd = g.GetFieldData()
+    names, numbers = fd.GetAbstractArray("face_name"), fd.GetArray("face_number")
+    if names is None or numbers is None:
+        fails.append("%s: VTU without face_name / face_number field data" % label)
+        return
+    name_of = {int(numbers.GetValue(i)): names.GetValue(i) for i in range(names.GetNumberOfValues())}
+    print("%s: VTU face names %s" % (label, name_of))
+    span = {}
+    face = g.GetCellData().GetArray("face")
+    for c in range(g.GetNumberOfCells()):
+        name = name_of.get(int(face.GetValue(c)), "?")
+        pts = g.GetCell(c).GetPoints()
+        xs = [pts.GetPoint(k)[0] for k in range(pts.GetNumberOfPoints())]
+        lo, hi = span.get(name, (math.inf, -math.inf))
+        span[name] = (min(lo, min(xs)), max(hi, max(xs)))
+    want = {"plate_%d" % k: f for k, f in enumerate(faces)}
+    if sorted(span) != sorted(want) or any(
+            abs(span[n][0] - want[n][0]) > 1e-12 * x_max or abs(span[n][1] - want[n][1]) > 1e-12 * x_max
+            for n in want):
+        fails.append("%s: VTU faces by name span %s, expected %s" % (label, span, want))
 
 
 def main():

@@ -126,6 +126,14 @@ sq_status sq_api_face_mesh(const sq_model *model, int face, const sq_options *o,
                            const int *held_edges, const int *min_chords,
                            const sq_edge_points *edge_points, sq_mesh **out, sq_error *err);
 
+/* sq_api_face_mesh of faces[i], i in [0, n), of m into out[i] (NULLs on
+ * entry), held[i] and minc[i] as there (held NULL: none; minc[i] NULL:
+ * none): the faces on o->threads threads (model_mesh_faces.c), each
+ * face's mesh stage on its share of them; the log lines in face order;
+ * on failure the first failing face's status and error, out all NULL. */
+sq_status sq_api_faces_mesh(const sq_model *m, int n, const int *faces, const sq_options *o,
+                            int *const *held, int *const *minc, sq_mesh **out, sq_error *err);
+
 /* Appended to a cusp's refusal (sq_face_check_cusps): why healing left
  * it, the option that would blunt it. */
 void sq_api_cusp_hint(const cad_model *model, const sq_face_info *fi, sq_error *err);

@@ -78,42 +78,70 @@ static sq_status faces_load(const sq_model *m, const int *faces, int n, const sq
     return SQ_OK;
 }
 
-/* Face k by its own roads (as o says) at the domain's size, the vertices
- * on its shared curves held, at least minc[e] chords on its edges, its
- * vertices on edge e slid onto ep[e]; its mesh into f->q[k]. */
-static sq_status mesh_one(const sq_model *m, const sq_domain *d, faces_open *f, int k,
-                          const sq_options *o, const int *minc, const sq_edge_points *ep,
-                          const char **road, sq_error *err)
+/* Face k's held edges (its shared curves), allocated; NULL: out of memory. */
+static int *held_edges(const sq_domain *d, const faces_open *f, int k)
 {
     int ne = cad_face_num_edges(f->cad[k]);
     int *held = calloc((size_t)ne + 1, sizeof(int));
-    if (!held) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    for (int e = 0; e < ne; e++) held[e] = d->curves[d->curve_of[k][e]].face[1] >= 0;
-    sq_mesh *h = NULL;
-    sq_status st = sq_api_face_mesh(m, f->face[k].index, o,
-                                    sq_domain_face_shares(d, k) ? held : NULL, minc, ep, &h, err);
-    free(held);
-    if (st != SQ_OK) return st;
-    road[k] = !strcmp(h->road.name, "split") ? "split" : "layout";
-    sq_quad_mesh_free(&f->q[k]);
-    f->q[k] = h->q;
-    h->q = NULL;
-    sq_mesh_free(&h);
-    return SQ_OK;
+    for (int e = 0; held && e < ne; e++) held[e] = d->curves[d->curve_of[k][e]].face[1] >= 0;
+    return held;
 }
 
-/* The faces with (shares 1) or without (0) a shared curve, each by
- * mesh_one with no points to slide onto, one after another: serial
- * OpenBLAS is not safe for concurrent callers (docs/domains.md, "Threads"),
- * and every face's field and relaxation factorize through it. */
+/* Face k's mesh h taken into f->q[k] (h freed), its road noted. */
+static void take_face(faces_open *f, int k, sq_mesh **h, const char **road)
+{
+    road[k] = !strcmp((*h)->road.name, "split") ? "split" : "layout";
+    sq_quad_mesh_free(&f->q[k]);
+    f->q[k] = (*h)->q;
+    (*h)->q = NULL;
+    sq_mesh_free(h);
+}
+
+/* Face k by its own roads (as o says) at the domain's size, the vertices
+ * on its shared curves held, at least minc[k][e] chords on its edges, its
+ * vertices on edge e slid onto ep[e]; its mesh into f->q[k]. */
+static sq_status mesh_one(const sq_model *m, const sq_domain *d, faces_open *f, int k,
+                          const sq_options *o, int *const *minc, const sq_edge_points *ep,
+                          const char **road, sq_error *err)
+{
+    int *held = held_edges(d, f, k);
+    if (!held) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    sq_mesh *h = NULL;
+    sq_status st = sq_api_face_mesh(m, f->face[k].index, o, held, minc[k], ep, &h, err);
+    free(held);
+    if (st == SQ_OK) take_face(f, k, &h, road);
+    return st;
+}
+
+/* The faces with (shares 1) or without (0) a shared curve, each by its
+ * own roads (as o says) at the domain's size, the vertices on its shared
+ * curves held, at least minc[k][e] chords on its edges (minc NULL: none),
+ * on threads (sq_api_faces_mesh); their meshes taken into f->q. */
 static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
                            const sq_options *o, int shares, int *const *minc, const char **road,
                            sq_error *err)
 {
-    for (int k = 0; k < f->n; k++)
-        if (sq_domain_face_shares(d, k) == shares)
-            SQ_TRY(mesh_one(m, d, f, k, o, minc ? minc[k] : NULL, NULL, road, err));
-    return SQ_OK;
+    int n = 0, *sel = calloc((size_t)f->n, sizeof(int));
+    int *number = calloc((size_t)f->n, sizeof(int)); /* sel's CAD face numbers */
+    int **held = calloc((size_t)f->n, sizeof *held), **mc = calloc((size_t)f->n, sizeof *mc);
+    sq_mesh **h = calloc((size_t)f->n, sizeof *h);
+    sq_status st = sel && number && held && mc && h ? SQ_OK
+                                                   : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < f->n && st == SQ_OK; k++) {
+        if (sq_domain_face_shares(d, k) != shares) continue;
+        if (!(held[n] = held_edges(d, f, k))) {
+            st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+            break;
+        }
+        mc[n] = minc ? minc[k] : NULL;
+        sel[n] = k, number[n++] = f->face[k].index;
+    }
+    if (st == SQ_OK) st = sq_api_faces_mesh(m, n, number, o, shares ? held : NULL, mc, h, err);
+    for (int i = 0; i < n && st == SQ_OK; i++) take_face(f, sel[i], &h[i], road);
+    for (int i = 0; i < f->n && held; i++) free(held[i]);
+    for (int i = 0; i < f->n && h; i++) sq_mesh_free(&h[i]);
+    free(sel), free(number), free(held), free(mc), free(h);
+    return st;
 }
 
 /* Where the faces' layouts put their corners on a shared curve at places
@@ -132,7 +160,7 @@ static sq_status slide_faces(const sq_model *m, const sq_domain *dm, faces_open 
         sq_edge_points *ep = calloc((size_t)ne + 1, sizeof *ep);
         if (!ep) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
         st = sq_domain_layout_points(dm, k, f->q, ep, &any, err);
-        if (st == SQ_OK && any) st = mesh_one(m, dm, f, k, o, minc[k], ep, road, err);
+        if (st == SQ_OK && any) st = mesh_one(m, dm, f, k, o, minc, ep, road, err);
         sq_domain_layout_points_free(ep, ne);
         free(ep);
     }

@@ -185,9 +185,9 @@ static const sq_cli_opt mesh_opts[] = {
      .help = "refuse, before meshing, a size giving more quads (and name one that fits)",
      .target = SQ_CLI_AT(opt.max_quads)},
     {.name = "threads", .kind = SQ_CLI_CUSTOM, .value = "N", .def = "SEMQUAD_THREADS, else every processor",
-     .help = "threads for a large mesh's refinement, the quality pass and the MSH text's "
-             "formatting (0: every processor); "
-             "the files are byte-identical for every N",
+     .help = "threads for the faces of a domain (each face's field, layout and mesh), a large "
+             "mesh's refinement, the quality pass and the MSH text's formatting (0: every "
+             "processor); the files are byte-identical for every N",
      .parse = parse_threads},
     {.name = "relax-max-quads", .kind = SQ_CLI_REAL, .value = "N", .lo = 0.0, .hi = 1e15,
      .def = "5e4",

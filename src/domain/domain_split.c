@@ -4,6 +4,7 @@
 #include "domain.h"
 #include "quad_edges.h"
 #include "quad_split.h"
+#include "sq_parallel.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -153,23 +154,58 @@ static sq_status work_alloc(const sq_domain *d, split_work *w, sq_error *err)
     return SQ_OK;
 }
 
-/* One round of design 2: every sharing face triangulated (from the lists
- * of the last round unless it is the first), one after another (serial
- * OpenBLAS is not safe for concurrent callers, docs/domains.md "Threads");
- * *agreed when every face put exactly the joined list's points on each of
- * its interfaces. */
+/* One step over the sharing faces on threads (sq_parallel_for): each face
+ * triangulated (from the lists of the last round unless it is the first)
+ * or meshed on its triangulation, writing only its own result, so that
+ * both are the serial run's for every thread count. */
+typedef struct {
+    const sq_domain *d;
+    sq_mesher_options o; /* the caller's, the faces' own loops on their share of the threads */
+    split_work *w;
+    int first;
+    sq_quad_mesh **out; /* NULL: triangulate */
+} faces_step;
+
+static sq_status step_range(void *ctx, long begin, long end, sq_error *err)
+{
+    const faces_step *s = ctx;
+    for (long f = begin; f < end; f++) {
+        if (!sq_domain_face_shares(s->d, (int)f)) continue;
+        sq_mesher_options o = s->o;
+        const cad_face *face = s->d->faces[f];
+        const sq_face_info *info = &s->d->info[f];
+        if (s->out) {
+            o.held_edges = s->w->held[f];
+            SQ_TRY(sq_mesh_split_triangulation(face, info, &s->w->tri[f], &o, &s->out[f], err));
+            continue;
+        }
+        o.edge_points = s->first ? NULL : s->w->ep[f];
+        sq_triangulation_free(&s->w->tri[f]);
+        SQ_TRY(sq_split_triangulate(face, info, &o, &s->w->tri[f], err));
+    }
+    return SQ_OK;
+}
+
+static sq_status faces_step_run(const sq_domain *d, const sq_mesher_options *mo, split_work *w,
+                                int first, sq_quad_mesh **out, sq_error *err)
+{
+    int inner, outer = sq_threads_nested(mo->threads, d->nfaces, &inner);
+    faces_step s = {d, *mo, w, first, out};
+    s.o.threads = inner;
+    if (outer > 1) s.o.progress.fn = NULL; /* the faces' events would interleave */
+    return sq_parallel_for(outer, d->nfaces, 1, step_range, &s, err);
+}
+
+/* One round of design 2: every sharing face triangulated; *agreed when
+ * every face put exactly the joined list's points on each of its
+ * interfaces. */
 static sq_status round_once(const sq_domain *d, const sq_mesher_options *mo, split_work *w,
                             int first, int *agreed, sq_error *err)
 {
     for (int c = 0; c < d->ncurves; c++) w->all[c].n = 0;
-    for (int f = 0; f < d->nfaces; f++) {
-        if (!sq_domain_face_shares(d, f)) continue;
-        sq_mesher_options o = *mo;
-        o.edge_points = first ? NULL : w->ep[f];
-        sq_triangulation_free(&w->tri[f]);
-        SQ_TRY(sq_split_triangulate(d->faces[f], &d->info[f], &o, &w->tri[f], err));
-        SQ_TRY(collect(d, f, &w->tri[f], w->own, w->all, err));
-    }
+    SQ_TRY(faces_step_run(d, mo, w, first, NULL, err));
+    for (int f = 0; f < d->nfaces; f++)
+        if (sq_domain_face_shares(d, f)) SQ_TRY(collect(d, f, &w->tri[f], w->own, w->all, err));
     *agreed = 1;
     for (int c = 0; c < d->ncurves; c++) {
         const sq_domain_curve *cv = &d->curves[c];
@@ -198,12 +234,7 @@ sq_status sq_domain_mesh_split(const sq_domain *d, const sq_mesher_options *mo, 
                      "the faces' triangulations did not agree on their shared edges after %d "
                      "rounds; try another --size",
                      MAX_ROUNDS);
-    for (int f = 0; f < d->nfaces && st == SQ_OK; f++) {
-        if (!sq_domain_face_shares(d, f)) continue;
-        sq_mesher_options o = *mo;
-        o.held_edges = w.held[f];
-        st = sq_mesh_split_triangulation(d->faces[f], &d->info[f], &w.tri[f], &o, &out[f], err);
-    }
+    if (st == SQ_OK) st = faces_step_run(d, mo, &w, 0, out, err);
     if (st != SQ_OK)
         for (int f = 0; f < d->nfaces; f++)
             if (sq_domain_face_shares(d, f)) sq_quad_mesh_free(&out[f]);

@@ -38,6 +38,31 @@ static sq_status point_partners(FILE *fp, const sq_quad_mesh *m, sq_error *err)
     return SQ_OK;
 }
 
+/* A domain's faces (docs/domains.md): field data naming each face, a
+ * string array (VTK writes a string in ASCII as its character codes and a
+ * terminating 0) beside the faces' numbers in the same order, so that the
+ * cells' `face` numbers can be looked up by name. */
+static void face_names(FILE *fp, const sq_quad_mesh *m)
+{
+    if (!m->region) return;
+    fprintf(fp, "<FieldData>\n<Array type=\"String\" Name=\"face_name\" NumberOfTuples=\"%d\" "
+                "format=\"ascii\">\n",
+            m->nregions);
+    for (int r = 0; r < m->nregions; r++) {
+        char buf[32];
+        for (const unsigned char *c = (const unsigned char *)sq_quad_mesh_region_name(
+                 m, r, buf, sizeof buf);
+             *c; c++)
+            fprintf(fp, "%d ", *c);
+        fputs("0\n", fp);
+    }
+    fprintf(fp, "</Array>\n<DataArray type=\"Int32\" Name=\"face_number\" "
+                "NumberOfTuples=\"%d\" format=\"ascii\">\n",
+            m->nregions);
+    for (int r = 0; r < m->nregions; r++) fprintf(fp, "%d\n", m->region_face[r]);
+    fputs("</DataArray>\n</FieldData>\n", fp);
+}
+
 sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m0, const sq_progress *progress,
                             sq_error *err)
 {
@@ -67,7 +92,9 @@ sq_status sq_write_quad_vtu(const char *path, const sq_quad_mesh *m0, const sq_p
     FILE *fp = f.fp;
     fprintf(fp, "<?xml version=\"1.0\"?>\n"
                 "<VTKFile type=\"UnstructuredGrid\" version=\"1.0\" byte_order=\"LittleEndian\">\n"
-                "<UnstructuredGrid>\n<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n"
+                "<UnstructuredGrid>\n");
+    face_names(fp, m0);
+    fprintf(fp, "<Piece NumberOfPoints=\"%d\" NumberOfCells=\"%d\">\n"
                 "<Points>\n<DataArray type=\"Float64\" NumberOfComponents=\"3\" format=\"ascii\">\n",
             m->nnodes, nq);
     for (int v = 0; v < m->nnodes; v++) {

@@ -3,6 +3,8 @@
  * Geuzaine 2013). */
 #include "jacobian_bezier.h"
 
+#include "lib_lock.h"
+
 #include <float.h>
 #include <lapacke.h>
 #include <math.h>
@@ -53,8 +55,10 @@ static sq_status lagrange_to_bernstein(sq_jac_bezier *jb, const sq_quad_basis *b
     for (int a = 0; a < n; a++)
         for (int k = 0; k < n; k++)
             jb->to_bern[a * n + k] = bernstein(jb, n - 1, k, b->t[a]);
+    sem_lib_lock();
     lapack_int info = LAPACKE_dgetrf(LAPACK_ROW_MAJOR, n, n, jb->to_bern, n, ipiv);
     if (info == 0) info = LAPACKE_dgetri(LAPACK_ROW_MAJOR, n, jb->to_bern, n, ipiv);
+    sem_lib_unlock();
     if (info != 0)
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "Bernstein collocation matrix of order %d singular",
                        jb->order);
