@@ -164,6 +164,18 @@ typedef struct {
     const char *name;
 } sq_boundary_name;
 
+/* A name for a face of a domain (docs/domains.md, "Outputs"): the face
+ * numbered `face` in the CAD file (as `semquad info` lists them), or, with
+ * face = -1, the face holding the point (x, y).  It names the face's group
+ * (MSH physical name, Nektar++ face composite, the VTU's face_name, the
+ * report's groups) over the file's name; a name another face took gets
+ * "_<face number>" (each face is its own group).  name: [A-Za-z0-9_-]+. */
+typedef struct {
+    int face;
+    double x, y;
+    const char *name;
+} sq_face_name;
+
 /* The characters of a boundary name. */
 #define SQ_NAME_CHARS "ABCDEFGHIJKLMNOPQRSTUVWXYZabcdefghijklmnopqrstuvwxyz0123456789_-"
 
@@ -259,6 +271,10 @@ typedef struct {
      * nested refinement, new boundary nodes on the CAD curves); 0: always
      * relax the whole mesh.  docs/mesh.md, "Large meshes". */
     double relax_max_quads;
+    /* Face names (appended): names of a domain's faces over the file's
+     * (a mesh of one face has one group, "domain": SQ_ERR_USAGE) */
+    int nface_names;
+    const sq_face_name *face_names;
 } sq_options;
 
 /* The default of sq_options.relax_max_quads: meshes of up to this many

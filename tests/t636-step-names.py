@@ -22,7 +22,10 @@ holding a space and one 'NONE', the exporters' "no name") and each face
   - the Nektar++ XML carries the names as composite NAMEs;
   - in the three-face domain each face is a surface group named as the
     file names the face (plate_N), in the MSH and the Nektar++ XML, and in
-    the VTU (read by VTK's reader) the field data name each cell's face.
+    the VTU (read by VTK's reader) the field data name each cell's face;
+    `--names` lines `face N NAME` and `face X Y NAME` rename faces (a name
+    another face has gets _N), and are refused (exit 2, one line, no file)
+    for a face not meshed, a point in no face, and a mesh of one face.
 usage: t636-step-names.py SEMQUAD DOMAIN_FACES_PY"""
 import math
 import os
@@ -159,6 +162,36 @@ def check(label, step, segs, x_max, nbottom, tmp):
             if 'NAME="%s"> Q[' % name not in text:
                 fails.append("%s: Nektar++ XML without the face composite NAME %s" % (label, name))
         check_vtu(label, step, faces, x_max, tmp)
+        check_face_names(label, step, tmp)
+
+
+def check_face_names(label, step, tmp):
+    """--names 'face' lines over the file's face names: by number, by a
+    point inside, a name another face has (gets _<face number>); refused
+    for one face (exit 2, no file) and for a face that is not meshed."""
+    names_file = os.path.join(tmp, label + ".faces")
+    open(names_file, "w").write("face 1 solid\nface 2.8 0.5 outlet_block\nface 0 solid\n")
+    msh = os.path.join(tmp, label + "_faces.msh")
+    r = run(["mesh", step, "--order", "2", "--size", "0.25", "-o", msh, "-q", "--names", names_file])
+    if r.returncode:
+        fails.append("%s: face names: exit %d: %s" % (label, r.returncode, r.stderr.strip()))
+        return
+    s = {name: min(p[0] for p in ps) for name, ps in groups(msh, 2).items()}
+    print("%s: surface groups with face names %s" % (label, sorted(s)))
+    want = {"solid_0": 0.0, "solid": 1.0, "outlet_block": 2.5}  # each face's least x
+    if sorted(s) != sorted(want) or any(abs(s[n] - want[n]) > 1e-12 * 3.0 for n in want):
+        fails.append("%s: face names give surface groups %s, expected %s" % (label, s, want))
+    for lines, why in (("face 7 x\n", "a face not meshed"), ("face 9 9 x\n", "a point in no face")):
+        open(names_file, "w").write(lines)
+        bad = os.path.join(tmp, label + "_bad.msh")
+        r = run(["mesh", step, "--order", "2", "--size", "0.25", "-o", bad, "-q", "--names", names_file])
+        if r.returncode != 2 or os.path.exists(bad) or len(r.stderr.strip().splitlines()) != 1:
+            fails.append("%s: face names of %s: exit %d, file %s, stderr %r" % (
+                label, why, r.returncode, os.path.exists(bad), r.stderr))
+    r = run(["mesh", step, "--face", "0", "--order", "2", "-o", bad, "-q", "--names", names_file])
+    if r.returncode != 2 or os.path.exists(bad):
+        fails.append("%s: face names on one face: exit %d (expected 2), file %s" % (
+            label, r.returncode, os.path.exists(bad)))
 
 
 def check_vtu(label, step, faces, x_max, tmp):

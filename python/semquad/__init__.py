@@ -68,7 +68,8 @@ class _Options(ctypes.Structure):
         ("study_geom_order", ctypes.c_int),
         ("log", _LOG_FN), ("log_data", ctypes.c_void_p),
         ("progress", _PROGRESS_FN), ("progress_data", ctypes.c_void_p),
-        ("threads", ctypes.c_int), ("relax_max_quads", ctypes.c_double)]
+        ("threads", ctypes.c_int), ("relax_max_quads", ctypes.c_double),
+        ("nface_names", ctypes.c_int), ("face_names", ctypes.c_void_p)]
 
 
 def _find_library():

@@ -100,6 +100,10 @@ sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err);
  * to m's curves (m->tag_name) by edge or nearest point. */
 sq_status sq_api_names_check(const sq_options *o, sq_error *err);
 sq_status sq_api_name_tags(sq_quad_mesh *m, const sq_options *o, sq_error *err);
+/* The options' face names given to a domain's faces (m->region_name) by
+ * number or by a point inside; SQ_ERR_USAGE for a mesh of one face (m
+ * NULL: one face, before it is meshed). */
+sq_status sq_api_name_faces(sq_quad_mesh *m, const sq_options *o, sq_error *err);
 /* The names the CAD file gives m's curves (cad_face_edge_name): curve t
  * is edge t of cad[0] (curves NULL: one face), or, of a domain, curve c's
  * tag is edge curves[c].edge[0] of cad[curves[c].face[0]]; and a domain's

@@ -447,8 +447,9 @@ sq_status sq_api_mesh_arrays(sq_mesh *h, sq_error *err)
 sq_status sq_face_mesh(const sq_model *model, int face, const sq_options *o, sq_mesh **out,
                        sq_error *err)
 {
-    SQ_TRY(sq_api_face_mesh(model, face, o, NULL, NULL, NULL, out, err));
     sq_options def;
+    SQ_TRY(sq_api_name_faces(NULL, sq_api_options(o, &def), err)); /* refused before the work */
+    SQ_TRY(sq_api_face_mesh(model, face, o, NULL, NULL, NULL, out, err));
     const cad_face *cad = (*out)->face.cad;
     sq_status st = sq_api_file_names((*out)->q, model->cad, &cad, NULL, 0, err);
     if (st == SQ_OK) st = sq_api_name_tags((*out)->q, sq_api_options(o, &def), err);

@@ -22,6 +22,20 @@ sq_status sq_api_names_check(const sq_options *o, sq_error *err)
             return SQ_FAIL(err, SQ_ERR_USAGE, "names[%d] (%s): edge %d, expects >= 0, or -1 and a point",
                            k, s, b->edge);
     }
+    if (o->nface_names < 0 || (o->nface_names > 0 && !o->face_names))
+        return SQ_FAIL(err, SQ_ERR_USAGE, "face names: nface_names %d without a list", o->nface_names);
+    for (int k = 0; k < o->nface_names; k++) {
+        const sq_face_name *b = &o->face_names[k];
+        const char *s = b->name;
+        if (!s || !*s || s[strspn(s, SQ_NAME_CHARS)] || strlen(s) > 63)
+            return SQ_FAIL(err, SQ_ERR_USAGE,
+                           "face_names[%d]: name '%s', expects [A-Za-z0-9_-]+ (at most 63)", k,
+                           s ? s : "");
+        if (b->face < -1 || (b->face == -1 && !(isfinite(b->x) && isfinite(b->y))))
+            return SQ_FAIL(err, SQ_ERR_USAGE,
+                           "face_names[%d] (%s): face %d, expects >= 0, or -1 and a point", k, s,
+                           b->face);
+    }
     return SQ_OK;
 }
 
@@ -73,21 +87,79 @@ static sq_status name_tag(sq_quad_mesh *m, int t, const char *name, sq_error *er
     return SQ_OK;
 }
 
-/* The faces of a domain named as the file names them; a name an earlier
- * face took gets "_<face number>" (each face is its own group). */
+/* Face r of a domain named name, or "<name>_<face number>" when another
+ * face has that name (each face is its own group). */
+static sq_status name_region(sq_quad_mesh *m, int r, const char *name, sq_error *err)
+{
+    if (!m->region_name && !(m->region_name = calloc((size_t)m->nregions, sizeof *m->region_name)))
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    int taken = 0;
+    for (int u = 0; u < m->nregions && !taken; u++)
+        taken = u != r && m->region_name[u] && !strcmp(m->region_name[u], name);
+    size_t n = strlen(name) + 16;
+    char *s = malloc(n);
+    if (!s) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (taken) snprintf(s, n, "%s_%d", name, m->region_face[r]);
+    else snprintf(s, n, "%s", name);
+    free(m->region_name[r]); /* a later name of the face wins */
+    m->region_name[r] = s;
+    return SQ_OK;
+}
+
+/* The faces of a domain named as the file names them. */
 static sq_status name_regions(sq_quad_mesh *m, const cad_model *model, sq_error *err)
 {
     for (int r = 0; r < m->nregions; r++) {
         const char *name = cad_model_face_name(model, m->region_face[r]);
-        if (!name) continue;
-        if (!m->region_name && !(m->region_name = calloc((size_t)m->nregions, sizeof *m->region_name)))
-            return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-        int taken = 0;
-        for (int u = 0; u < r && !taken; u++) taken = m->region_name[u] && !strcmp(m->region_name[u], name);
-        size_t n = strlen(name) + 16;
-        if (!(m->region_name[r] = malloc(n))) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-        if (taken) snprintf(m->region_name[r], n, "%s_%d", name, m->region_face[r]);
-        else snprintf(m->region_name[r], n, "%s", name);
+        if (name) SQ_TRY(name_region(m, r, name, err));
+    }
+    return SQ_OK;
+}
+
+/* Whether (x, y) lies in the polygon of quad q's corners (crossing number:
+ * a point on the boundary of two quads counts for one of them). */
+static int in_quad(const sq_quad_mesh *m, int q, double x, double y)
+{
+    int Q = m->order, npe = (Q + 1) * (Q + 1), in = 0;
+    const int corner[4] = {0, Q, npe - 1, npe - 1 - Q};
+    for (int k = 0; k < 4; k++) {
+        const double *a = &m->xy[2 * (size_t)m->conn[(size_t)q * npe + corner[k]]];
+        const double *b = &m->xy[2 * (size_t)m->conn[(size_t)q * npe + corner[(k + 1) % 4]]];
+        if ((a[1] > y) != (b[1] > y) && x < a[0] + (y - a[1]) * (b[0] - a[0]) / (b[1] - a[1]))
+            in = !in;
+    }
+    return in;
+}
+
+/* The face r of a domain a face name means: its number, or the face of
+ * the first quad whose corners' polygon holds its point. */
+static sq_status named_region(const sq_quad_mesh *m, const sq_face_name *b, int *r, sq_error *err)
+{
+    for (*r = 0; b->face >= 0 && *r < m->nregions; ++*r)
+        if (m->region_face[*r] == b->face) return SQ_OK;
+    if (b->face >= 0)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "face name %s: face %d is not one of the faces meshed",
+                       b->name, b->face);
+    for (int q = 0; q < m->nquads; q++)
+        if (in_quad(m, q, b->x, b->y)) {
+            *r = m->region[q];
+            return SQ_OK;
+        }
+    return SQ_FAIL(err, SQ_ERR_USAGE, "face name %s: point (%g, %g) lies in no face meshed",
+                   b->name, b->x, b->y);
+}
+
+sq_status sq_api_name_faces(sq_quad_mesh *m, const sq_options *o, sq_error *err)
+{
+    if (o->nface_names <= 0) return SQ_OK;
+    if (!m || m->nregions == 0)
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "face names name the faces of a domain; a mesh of one face has one group, "
+                       "'domain'");
+    for (int k = 0; k < o->nface_names; k++) {
+        int r;
+        SQ_TRY(named_region(m, &o->face_names[k], &r, err));
+        SQ_TRY(name_region(m, r, o->face_names[k].name, err));
     }
     return SQ_OK;
 }

@@ -481,6 +481,7 @@ sq_status sq_model_mesh(const sq_model *m, const int *faces, int nfaces, const s
                      h->quality.inverted, h->quality.min_scaled_jacobian);
     if (st == SQ_OK) st = sq_api_mesh_arrays(h, err);
     if (st == SQ_OK) st = sq_api_name_tags(h->q, o, err);
+    if (st == SQ_OK) st = sq_api_name_faces(h->q, o, err);
     free(all);
     if (st != SQ_OK) {
         if (h) sq_mesh_free(&h);

@@ -46,6 +46,8 @@ typedef struct {
     sq_size_source size_sources[SQ_CLI_MAX_LIST]; /* mesh's sizes (opt.sizes points here) */
     sq_boundary_name names[SQ_CLI_MAX_LIST]; /* mesh --names (opt.names points here) */
     char name_text[SQ_CLI_MAX_LIST][64];      /* their names */
+    sq_face_name face_names[SQ_CLI_MAX_LIST]; /* its 'face' lines (opt.face_names) */
+    char face_name_text[SQ_CLI_MAX_LIST][64]; /* their names */
     double sizes[SQ_CLI_MAX_LIST];  /* converge --sizes (opt.study_sizes points here) */
     int levels;                     /* mesh --levels L (0: one mesh) */
     int orders[SQ_CLI_MAX_LIST];    /* mesh --orders Q1,Q2,... */

@@ -157,7 +157,8 @@ static const sq_cli_opt mesh_opts[] = {
     {.name = "sizes", .kind = SQ_CLI_CUSTOM, .value = "FILE", .def = "none",
      .help = "size sources, one per line (docs/sizes.md)", .parse = sq_cli_parse_size_file},
     {.name = "names", .kind = SQ_CLI_CUSTOM, .value = "FILE", .def = "none",
-     .help = "boundary names, lines 'EDGE NAME' or 'X Y NAME', over the STEP file's (docs/formats.md)",
+     .help = "boundary names, lines 'EDGE NAME' or 'X Y NAME', and face names, 'face FACE NAME' or "
+             "'face X Y NAME', over the STEP file's (docs/formats.md)",
      .parse = sq_cli_parse_names_file},
     SQ_CLI_OPT_PERIODIC,
     {.name = "size-gradation", .kind = SQ_CLI_REAL, .value = "G", .lo = 1.0001, .hi = 10.0,
