@@ -505,8 +505,10 @@ SQ_API int sq_mesh_format_known(const char *path);
  * Nested: every vertex of m is a vertex of *out with the same coordinates,
  * bit for bit.  Nothing is relaxed again (that would move m's vertices);
  * the quality is proven again, by the Bézier bounds (sq_mesh_scaled_jacobians,
- * sq_mesh_check_quality).  SQ_ERR_USAGE when the quads would exceed
- * opt->max_quads (opt NULL: the defaults).  *out borrows m's model, not m. */
+ * sq_mesh_check_quality).  m's periodic links are found again on *out,
+ * its image nodes set to the images of their masters.  SQ_ERR_USAGE when
+ * the quads would exceed opt->max_quads (opt NULL: the defaults) and for a
+ * mesh of several faces.  *out borrows m's model, not m. */
 SQ_API sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const sq_options *opt,
                                 sq_mesh **out, sq_error *err);
 

@@ -69,6 +69,34 @@ def area_and_angles(c, pos, sign=None):
     return area, np.mod(np.arctan2(sign * cross, dot), 2 * math.pi)
 
 
+def periodic_pairs(msh, size):
+    """The $Periodic section as Gmsh's reader gives it: {image curve (0-based):
+    (master curve, affine 4x4 rows, largest |T(x_master) - x| / size, pairs,
+    nodes on the curve)}, high-order nodes included."""
+    gmsh.initialize(["-v", "0"])
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.open(msh)
+    tags, xyz, _ = gmsh.model.mesh.getNodes()
+    pos = {t: (xyz[3 * k], xyz[3 * k + 1]) for k, t in enumerate(tags)}
+    out = {}
+    for dim, tag in gmsh.model.getEntities(1):
+        master, nodes, mnodes, aff = gmsh.model.mesh.getPeriodicNodes(dim, tag)
+        if master == tag or len(nodes) == 0:
+            continue
+        gap = 0.0
+        for n, m in zip(nodes, mnodes):
+            x, y = pos[m]
+            tx = aff[0] * x + aff[1] * y + aff[3]
+            ty = aff[4] * x + aff[5] * y + aff[7]
+            gap = max(gap, math.hypot(tx - pos[n][0], ty - pos[n][1]))
+        on_curve = set()
+        for _, _, enodes in zip(*gmsh.model.mesh.getElements(1, tag)):
+            on_curve.update(enodes)
+        out[tag - 1] = (master - 1, list(aff), gap / size, len(nodes), len(on_curve))
+    gmsh.finalize()
+    return out
+
+
 def stats(path):
     quads, tris, pos = read_elements(path)
     areas = np.concatenate([area_and_angles(quads, pos), area_and_angles(tris, pos)])

@@ -64,38 +64,14 @@ except ImportError:
     sys.exit(77)
 
 SQ, GEN, CASCADE = sys.argv[1], sys.argv[2], sys.argv[3]
+sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
+import msh_quad_stats  # noqa: E402
 fails = []
 
 
 def run_mesh(step, out, rep, extra=()):
     return subprocess.run([SQ, "mesh", step, "--periodic", "auto", "--order", "6", "-o", out,
                            "--report", rep, "-q"] + list(extra), capture_output=True, text=True)
-
-
-def gmsh_pairs(msh, size):
-    """{image curve: (master curve, affine 4x4 rows, largest gap, pairs, nodes on the curve)}"""
-    gmsh.initialize(["-v", "0"])
-    gmsh.option.setNumber("General.Terminal", 0)
-    gmsh.open(msh)
-    tags, xyz, _ = gmsh.model.mesh.getNodes()
-    pos = {t: (xyz[3 * k], xyz[3 * k + 1]) for k, t in enumerate(tags)}
-    out = {}
-    for dim, tag in gmsh.model.getEntities(1):
-        master, nodes, mnodes, aff = gmsh.model.mesh.getPeriodicNodes(dim, tag)
-        if master == tag or len(nodes) == 0:
-            continue
-        gap = 0.0
-        for n, m in zip(nodes, mnodes):
-            x, y = pos[m]
-            tx = aff[0] * x + aff[1] * y + aff[3]
-            ty = aff[4] * x + aff[5] * y + aff[7]
-            gap = max(gap, math.hypot(tx - pos[n][0], ty - pos[n][1]))
-        on_curve = set()
-        for _, _, enodes in zip(*gmsh.model.mesh.getElements(1, tag)):
-            on_curve.update(enodes)
-        out[tag - 1] = (master - 1, list(aff), gap / size, len(nodes), len(on_curve))
-    gmsh.finalize()
-    return out
 
 
 def check(name, step, expect, tmp):
@@ -117,7 +93,7 @@ def check(name, step, expect, tmp):
     bb = [float(v) for v in re.findall(r"[-0-9.e]+", subprocess.run(
         [SQ, "info", step], capture_output=True, text=True).stdout.split("bbox")[1].split("\n")[0])]
     size = math.hypot(bb[1] - bb[0], bb[3] - bb[2])
-    links = gmsh_pairs(msh, size)
+    links = msh_quad_stats.periodic_pairs(msh, size)
     for p in per["pairs"]:
         master, image = p["edges"]
         if image not in links:
@@ -138,7 +114,7 @@ def check(name, step, expect, tmp):
     # the binary file (--binary) holds the same links, read by the same reader
     binmsh = os.path.join(tmp, name + "_bin.msh")
     rb = run_mesh(step, binmsh, os.path.join(tmp, name + "_bin.json"), ["--binary"])
-    if rb.returncode != 0 or gmsh_pairs(binmsh, size) != links:
+    if rb.returncode != 0 or msh_quad_stats.periodic_pairs(binmsh, size) != links:
         fails.append("%s: --binary: exit %d, its periodic links differ from the text file's"
                      % (name, rb.returncode))
     if mesh["inverted"] != 0 or not mesh["min_scaled_jacobian"] > 0:

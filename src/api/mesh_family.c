@@ -5,6 +5,7 @@
 #include "api_private.h"
 #include "json_writer.h"
 #include "outfile.h"
+#include "periodic.h"
 #include "quad_edges.h"
 #include "quad_refine.h"
 
@@ -59,21 +60,25 @@ sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const sq_optio
                        (double)m->q->nquads * pow(4.0, levels), o->max_quads);
     const cad_face *face = m->face.cad;
     sq_quad_mesh *q = NULL;
-    /* level by level at m's order, so each level's vertices are the last's */
+    /* level by level at m's order, so each level's vertices are the last's;
+     * periodic links found again on each (the new nodes of a pair's curves
+     * are at the same arc-length fractions, so images of each other to the
+     * curves' accuracy), the image nodes set exactly */
     const sq_quad_mesh *from = m->q;
-    for (int k = 0; k < levels; k++) {
+    for (int k = 0; k <= levels; k++) {
+        if (k == levels && order == m->q->order && levels > 0) break;
         sq_quad_mesh *next = NULL;
-        sq_status st = sq_quad_mesh_refine(face, from, 2, m->q->order, o->threads, &next, err);
+        sq_status st = sq_quad_mesh_refine(face, from, k < levels ? 2 : 1,
+                                           k < levels ? m->q->order : order, o->threads, &next, err);
+        if (st == SQ_OK)
+            st = sq_periodic_relink(m->q, next, sqrt(m->quality.area / next->nquads),
+                                    SQ_PERIODIC_NODE_REL_TOL, err);
         sq_quad_mesh_free(&q);
-        if (st != SQ_OK) return st;
+        if (st != SQ_OK) {
+            sq_quad_mesh_free(&next);
+            return st;
+        }
         from = q = next;
-    }
-    if (order != m->q->order || levels == 0) {
-        sq_quad_mesh *raised = NULL;
-        sq_status st = sq_quad_mesh_refine(face, from, 1, order, o->threads, &raised, err);
-        sq_quad_mesh_free(&q);
-        if (st != SQ_OK) return st;
-        q = raised;
     }
     sq_api_log(o, SQ_LOG_INFO, "refined %d quads of order %d to %d of order %d", m->q->nquads,
                m->q->order, q->nquads, q->order);

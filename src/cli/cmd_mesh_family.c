@@ -59,8 +59,6 @@ sq_status sq_cli_family_check(sq_cli_args *a, char *manifest, size_t n, sq_error
             return SQ_FAIL(err, SQ_ERR_USAGE, "--manifest lists a family: add --levels or --orders");
         return SQ_OK;
     }
-    if (a->opt.periodic)
-        return SQ_FAIL(err, SQ_ERR_USAGE, "--levels and --orders do not carry --periodic links yet");
     if (a->no_output || !strcmp(a->output, "-"))
         return SQ_FAIL(err, SQ_ERR_USAGE, "--levels and --orders write files: drop %s",
                        a->no_output ? "--no-output" : "-o -");

@@ -116,6 +116,15 @@ sq_status sq_periodic_domain(const cad_face *const *face, const sq_face_info *in
 sq_status sq_periodic_link(const sq_periodic *p, sq_quad_mesh *m, double size, double rel_tol,
                            sq_error *err);
 
+/* The links of `from` found again on dst, a mesh made from it with the
+ * same boundary curves (a family's refined or re-ordered mesh,
+ * docs/convergence-families.md): each link's curves paired as
+ * sq_periodic_link pairs them, within rel_tol of size, dst's image nodes
+ * set, and from's counts of the identified domain kept (splitting quads
+ * adds regular vertices only). */
+sq_status sq_periodic_relink(const sq_quad_mesh *from, sq_quad_mesh *dst, double size,
+                             double rel_tol, sq_error *err);
+
 /* Design 3: chi of the identified domain; *index: the net sum of
  * (4 - valence) over its interior vertices that Gauss–Bonnet requires when
  * every boundary vertex has its ideal valence (then at least |index|

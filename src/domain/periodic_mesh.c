@@ -111,6 +111,26 @@ sq_status sq_periodic_link(const sq_periodic *p, sq_quad_mesh *m, double size, d
     return SQ_OK;
 }
 
+sq_status sq_periodic_relink(const sq_quad_mesh *from, sq_quad_mesh *dst, double size,
+                             double rel_tol, sq_error *err)
+{
+    if (from->nperiodic == 0) return SQ_OK;
+    sq_periodic p = {.npairs = from->nperiodic,
+                     .pairs = calloc((size_t)from->nperiodic, sizeof(sq_periodic_pair))};
+    if (!p.pairs) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int l = 0; l < p.npairs; l++) {
+        p.pairs[l].a = from->periodic[l].master, p.pairs[l].b = from->periodic[l].tag;
+        memcpy(p.pairs[l].affine, from->periodic[l].affine, sizeof p.pairs[l].affine);
+    }
+    sq_status st = sq_periodic_link(&p, dst, size, rel_tol, err);
+    free(p.pairs);
+    if (st != SQ_OK) return st;
+    dst->periodic_chi = from->periodic_chi, dst->periodic_index = from->periodic_index;
+    dst->periodic_irregular = from->periodic_irregular;
+    dst->periodic_mesh_index = from->periodic_mesh_index;
+    return SQ_OK;
+}
+
 static int find(int *up, int x)
 {
     while (up[x] != x) x = up[x] = up[up[x]];
