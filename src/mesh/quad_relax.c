@@ -757,7 +757,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
         done |= E - E1 < STALL_DROP * E && E - E1 >= 0.5 * last_drop;
         /* A linear tail that this does not stop yet (a ratio from
          * EXACT_RATIO: the disc's rotation along its circle, decreases
-         * falling by 0.40-0.46 a step, 8 more steps to a ratio of 1/2) is
+         * falling by 0.40-0.50 a step, 8 more steps to a ratio above 1/2) is
          * ended by one exact Newton step.  Its cause is the projected
          * Hessian, which overestimates the curvature along such a mode (each
          * decrease 1.1-1.7 times its model's, rho): with PCG run to 1e-6 the
