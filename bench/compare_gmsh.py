@@ -25,8 +25,10 @@ inside the Python child; semquad: its report's timings_s.total).  Targets
 are judged like against like.
 
 Usage (from the repository root; needs Debian's /usr/bin/python3 with gmsh):
-  /usr/bin/python3 bench/compare_gmsh.py [--size 0.1] [--runs 3]
+  /usr/bin/python3 bench/compare_gmsh.py [--semquad PATH] [--size 0.1] [--runs 3]
         [--examples a,b] [--json out.json] [--keep DIR]
+The semquad binary: --semquad, else $SEMQUAD, else build/src/semquad (built
+by the caller: a release build, e.g. build-release/src/semquad, for numbers).
 Prints Markdown on stdout.  Not a test.
 """
 import argparse
@@ -41,8 +43,6 @@ import tempfile
 import time
 
 ROOT = os.path.dirname(os.path.dirname(os.path.abspath(__file__)))
-BUILD = os.path.join(ROOT, "build-release")
-SEMQUAD = os.path.join(BUILD, "src", "semquad")
 QUADSTATS_DEFAULT = os.path.join(ROOT, "tests", "msh_quad_stats.py")
 PY = "/usr/bin/python3"  # the interpreter with Debian's gmsh module
 
@@ -189,6 +189,9 @@ def main():
         gmsh_child(a[0], a[1], float(a[2]), float(a[3]), int(a[4]))
         return 0
     ap = argparse.ArgumentParser(description=__doc__.splitlines()[0])
+    ap.add_argument("--semquad", default=os.environ.get("SEMQUAD", os.path.join(ROOT, "build", "src",
+                                                                                "semquad")),
+                    help="the semquad binary (default $SEMQUAD, else build/src/semquad)")
     ap.add_argument("--size", type=float, default=0.1)
     ap.add_argument("--runs", type=int, default=3)
     ap.add_argument("--examples", default="")
@@ -199,10 +202,10 @@ def main():
     ap.add_argument("--keep", default="", help="keep the .msh files in this folder")
     a = ap.parse_args()
 
-    if not os.path.isdir(BUILD):
-        subprocess.run(["meson", "setup", BUILD, "--buildtype=release"], cwd=ROOT, check=True,
-                       stdout=subprocess.DEVNULL)
-    subprocess.run(["ninja", "-C", BUILD, "src/semquad"], check=True, stdout=subprocess.DEVNULL)
+    if not os.access(a.semquad, os.X_OK):
+        print("compare_gmsh: %s is not an executable (--semquad or $SEMQUAD)" % a.semquad,
+              file=sys.stderr)
+        return 2
 
     files = sorted(glob.glob(os.path.join(ROOT, "examples", "*.step")))
     files = [f for f in files if os.path.basename(f) != "sphere.step"]
@@ -225,7 +228,7 @@ def main():
         sq_msh, sq_rep = os.path.join(tmp, name + ".semquad.msh"), os.path.join(tmp, name + ".json")
         walls, inproc, meshing, rss, err = [], [], [], 0, None
         for _ in range(a.runs):
-            rc, _, se, wall, m = timed([SEMQUAD, "mesh", f, "--order", "1", "--size", repr(a.size),
+            rc, _, se, wall, m = timed([a.semquad, "mesh", f, "--order", "1", "--size", repr(a.size),
                                         "-o", sq_msh, "--report", sq_rep, "-q"])
             if rc != 0:
                 err = "exit %d: %s" % (rc, last_err(se))

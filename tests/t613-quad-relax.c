@@ -61,6 +61,107 @@ static int ring(const cad_face *f, double r, double turn, int hold, int want)
     return fails;
 }
 
+/* The rotation near-symmetry (disc.step, the unit circle: no corner): an
+ * O-grid like the disc's layout (a central square of ON x ON quads, 4 ON x
+ * OM blocks from its sides to the circle; its corners the 4 valence-3
+ * points), every vertex free and shaken, so the relaxation holds only the
+ * first boundary vertex (quad_relax.c, prepare) and the rest may turn
+ * along the circle at almost no cost in energy.  Along that turn the
+ * projected Hessian's steps converge linearly; the exact Newton step that
+ * ends such a tail (quad_relax.c) takes what is left of it at once.  The
+ * work is counted (sq_relax_work_stats): 22 Newton steps measured without
+ * that step, 10 with it; the bound is the midpoint, 16.  And the result is
+ * the symmetric optimum to the resolution of that turn's energy: the
+ * central square's corners at one radius and turned alike from the
+ * diagonals through the centre (spreads measured 2e-6 and 7e-6 with the
+ * exact step, 6e-7 and 2e-6 without; the bound, 1e-4, is a hundredth of
+ * the shake, 1e-2, which a relaxation stopped early would leave). */
+#define ON 8
+#define OM 4
+static int ogrid(const cad_face *f)
+{
+    const int nc = (ON + 1) * (ON + 1), nv = nc + OM * 4 * ON, nq = ON * ON + OM * 4 * ON;
+    const double half = 0.4;
+    double xy[2 * ((ON + 1) * (ON + 1) + OM * 4 * ON)], sq[2 * 4 * ON];
+    int quad[4 * (ON * ON + OM * 4 * ON)], tag[4 * (ON * ON + OM * 4 * ON)];
+    int fixed[(ON + 1) * (ON + 1) + OM * 4 * ON], perim[4 * ON], fails = 0;
+    for (int j = 0; j <= ON; j++)
+        for (int i = 0; i <= ON; i++) {
+            xy[2 * (j * (ON + 1) + i)] = half * (2.0 * i / ON - 1.0);
+            xy[2 * (j * (ON + 1) + i) + 1] = half * (2.0 * j / ON - 1.0);
+        }
+    /* the square's boundary counter-clockwise from (-half, -half) */
+    for (int p = 0; p < 4 * ON; p++) {
+        int side = p / ON, t = p % ON;
+        int i = side == 0 ? t : side == 1 ? ON : side == 2 ? ON - t : 0;
+        int j = side == 0 ? 0 : side == 1 ? t : side == 2 ? ON : ON - t;
+        perim[p] = j * (ON + 1) + i;
+        sq[2 * p] = xy[2 * perim[p]], sq[2 * p + 1] = xy[2 * perim[p] + 1];
+    }
+    /* ring l (1..OM) from the square to the circle, at the angles of the
+     * square's points spread evenly */
+    for (int l = 1; l <= OM; l++)
+        for (int p = 0; p < 4 * ON; p++) {
+            double a = -0.75 * M_PI + 2.0 * M_PI * p / (4 * ON), t = (double)l / OM;
+            int v = nc + (l - 1) * 4 * ON + p;
+            xy[2 * v] = (1.0 - t) * sq[2 * p] + t * cos(a);
+            xy[2 * v + 1] = (1.0 - t) * sq[2 * p + 1] + t * sin(a);
+        }
+    for (int v = 0; v < nv; v++) {
+        fixed[v] = 0;
+        if (v < nc + (OM - 1) * 4 * ON) { /* inside: shaken by 1e-2 */
+            xy[2 * v] += 0.01 * sin(3.0 * v), xy[2 * v + 1] += 0.01 * cos(5.0 * v);
+        } else { /* on the circle: turned by up to 1e-2 */
+            double a = atan2(xy[2 * v + 1], xy[2 * v]) + 0.01 * sin(7.0 * v);
+            xy[2 * v] = cos(a), xy[2 * v + 1] = sin(a);
+        }
+    }
+    int q = 0;
+    for (int j = 0; j < ON; j++)
+        for (int i = 0; i < ON; i++, q++) {
+            int c[4] = {j * (ON + 1) + i, j * (ON + 1) + i + 1, (j + 1) * (ON + 1) + i + 1,
+                        (j + 1) * (ON + 1) + i};
+            for (int k = 0; k < 4; k++)
+                quad[4 * q + k] = c[k], tag[4 * q + k] = -1;
+        }
+    for (int l = 0; l < OM; l++)
+        for (int p = 0; p < 4 * ON; p++, q++) {
+            /* counter-clockwise: inner p, outer p, outer p+1, inner p+1 */
+            int p1 = (p + 1) % (4 * ON);
+            int in0 = l ? nc + (l - 1) * 4 * ON + p : perim[p],
+                in1 = l ? nc + (l - 1) * 4 * ON + p1 : perim[p1];
+            int c[4] = {in0, nc + l * 4 * ON + p, nc + l * 4 * ON + p1, in1};
+            for (int k = 0; k < 4; k++)
+                quad[4 * q + k] = c[k], tag[4 * q + k] = k == 1 && l == OM - 1 ? 0 : -1;
+        }
+    sq_relax_mesh m = {nv, nq, xy, quad, tag, fixed};
+    sq_relax_work *work = NULL;
+    sq_error err;
+    SQ_TEST_OK(sq_quad_relax(f, &m, &work, &err), err);
+    int steps;
+    long polls;
+    sq_relax_work_stats(work, &steps, &polls);
+    sq_relax_work_free(&work);
+    fprintf(stderr, "t613 ogrid: %d quads, %d Newton steps\n", nq, steps);
+    fails += sq_check_int("t613 ogrid", "Newton steps <= 16", steps <= 16, 1);
+    const int corner[4] = {0, ON, nc - 1, ON * (ON + 1)};
+    double rmin = HUGE_VAL, rmax = 0.0, tmin = HUGE_VAL, tmax = -HUGE_VAL;
+    for (int k = 0; k < 4; k++) {
+        const double *x = &xy[2 * corner[k]], r = hypot(x[0], x[1]);
+        /* the turn from the diagonal, in (-pi/4, pi/4] */
+        double t = atan2(x[1], x[0]) - (-0.75 * M_PI + 0.5 * M_PI * k);
+        t -= 2.0 * M_PI * round(t / (2.0 * M_PI));
+        rmin = fmin(rmin, r), rmax = fmax(rmax, r);
+        tmin = fmin(tmin, t), tmax = fmax(tmax, t);
+    }
+    fprintf(stderr,
+            "t613 ogrid: corners at radius %.6f (spread %.1e), turned by %.3e (spread %.1e)\n",
+            rmin, rmax - rmin, tmin, tmax - tmin);
+    fails += sq_check_abs("t613 ogrid", "spread of the corners' radii", rmax - rmin, 0.0, 1e-4);
+    fails += sq_check_abs("t613 ogrid", "spread of the corners' turns", tmax - tmin, 0.0, 1e-4);
+    return fails;
+}
+
 /* The relaxation's work on a thin face's split-road mesh (stress corpus
  * class sliver: 0073, 25 920 quads, took 18 s of CPU, most of it in the
  * compass search): a strip of N pairs of right triangles, each cell
@@ -242,6 +343,10 @@ int main(void)
     sq_relax_work_free(&work);
     sq_relax_work_free(&work); /* NULL-safe */
     fails += strip(f);
+    cad_face_free(&f);
+    cad_model_free(&model);
+    sq_test_open_face("disc.step", &model, &f);
+    fails += ogrid(f);
     cad_face_free(&f);
     cad_model_free(&model);
     sq_test_open_face("square_hole.step", &model, &f);
