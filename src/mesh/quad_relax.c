@@ -751,9 +751,9 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
          * least half the step before's is linear convergence (the inexact
          * directions of a near-symmetry, e.g. a thin ring's vertices drifting
          * along it: stress 0073 moved 1e-5 of the extent per step for 30
-         * steps while the energy fell by 1e-10 of itself); what is left of a
-         * geometric series of ratio >= 1/2 is at most twice the last term,
-         * below 2 STALL_DROP of the energy. */
+         * steps while the energy fell by 1e-10 of itself); stopping leaves
+         * what is left of a geometric series of ratio r, r / (1 - r) times
+         * the last decrease: under 10 STALL_DROP of the energy for r < 0.9. */
         done |= E - E1 < STALL_DROP * E && E - E1 >= 0.5 * last_drop;
         /* A linear tail that this does not stop yet (a ratio from
          * EXACT_RATIO: the disc's rotation along its circle, decreases
