@@ -188,6 +188,9 @@ int cad_face_num_edges(const cad_face *face);
 const char *cad_model_face_name(const cad_model *model, int index);
 const char *cad_face_edge_name(const cad_face *face, int edge);
 int cad_face_edge_loop(const cad_face *face, int edge);
+/* 1 when edge `edge` is a whole loop by itself (a closed curve: a full
+ * circle, its start its end), else 0. */
+int cad_face_edge_closed(const cad_face *face, int edge);
 cad_edge_type cad_face_edge_type(const cad_face *face, int edge);
 double cad_face_edge_length(const cad_face *face, int edge);
 

@@ -658,6 +658,12 @@ int cad_face_edge_loop(const cad_face *face, int edge)
     return face->edges[(size_t)edge].loop;
 }
 
+int cad_face_edge_closed(const cad_face *face, int edge)
+{
+    int loop = cad_face_edge_loop(face, edge);
+    return loop >= 0 && face->loop_n[(size_t)loop] == 1;
+}
+
 cad_edge_type cad_face_edge_type(const cad_face *face, int edge)
 {
     if (!face || edge < 0 || edge >= (int)face->edges.size()) return CAD_EDGE_OTHER;

@@ -276,7 +276,7 @@ sq_status sq_domain_layout_points(const sq_domain *d, int f, sq_quad_mesh *const
         double L = cad_face_edge_length(d->faces[f], e), tol = SAME_ARC * L;
         /* a closed curve (a whole loop): its vertices wherever they are;
          * else its start, then the interior vertices */
-        int closed = cad_face_loop_num_edges(d->faces[f], cad_face_edge_loop(d->faces[f], e)) == 1;
+        int closed = cad_face_edge_closed(d->faces[f], e);
         arc_list a = {0};
         st = closed ? SQ_OK : arc_add(&a, 0.0, err);
         if (st == SQ_OK) st = vertices_across(d, q[g], g, eg, f, e, cv->reversed, &a, err);

@@ -146,7 +146,7 @@ sq_status qm_slide_shared(const cad_face *face, const sq_mesher_options *opt, qm
     for (int e = 0; e < cad_face_num_edges(face) && st == SQ_OK; e++) {
         const sq_edge_points *ep = &opt->edge_points[e];
         if (ep->n == 0) continue;
-        if (cad_face_loop_num_edges(face, cad_face_edge_loop(face, e)) == 1) {
+        if (cad_face_edge_closed(face, e)) {
             st = slide_loop(face, e, ep, v, err);
             continue;
         }
