@@ -65,11 +65,13 @@ sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const sq_optio
      * are at the same arc-length fractions, so images of each other to the
      * curves' accuracy), the image nodes set exactly */
     const sq_quad_mesh *from = m->q;
-    for (int k = 0; k <= levels; k++) {
-        if (k == levels && order == m->q->order && levels > 0) break;
+    /* the levels, then one step to the other order (or a copy: no level) */
+    const int steps = levels + (order != m->q->order || levels == 0);
+    for (int k = 0; k < steps; k++) {
+        const int split = k < levels;
         sq_quad_mesh *next = NULL;
-        sq_status st = sq_quad_mesh_refine(face, from, k < levels ? 2 : 1,
-                                           k < levels ? m->q->order : order, o->threads, &next, err);
+        sq_status st = sq_quad_mesh_refine(face, from, split ? 2 : 1, split ? m->q->order : order,
+                                           o->threads, &next, err);
         if (st == SQ_OK)
             st = sq_periodic_relink(m->q, next, sqrt(m->quality.area / next->nquads),
                                     SQ_PERIODIC_NODE_REL_TOL, err);

@@ -43,8 +43,8 @@ static sq_status names_line(const char *where, char *line, sq_cli_args *a, sq_er
     if (n <= 0) return SQ_OK; /* blank */
     int face = !strcmp(w[0], "face");
     char extra[2];
-    if (n < 2 + face || sscanf(line, face ? " %*s %*s %*s %*s %1s" : " %*s %*s %*s %1s", extra) == 1 ||
-        (!face && n == 4))
+    /* a word past the last one a line may have (3, or 4 after 'face') */
+    if (n < 2 + face || sscanf(line, face ? " %*s %*s %*s %*s %1s" : " %*s %*s %*s %1s", extra) == 1)
         return SQ_FAIL(err, SQ_ERR_USAGE,
                        "%s: expects 'EDGE NAME', 'X Y NAME', 'face FACE NAME' or 'face X Y NAME'",
                        where);
