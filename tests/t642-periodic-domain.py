@@ -50,6 +50,16 @@ outer, low, high).  Meshed with `--periodic auto` at order 6, then:
     the image under T of one master edge (end vertices within 1e-12 of
     the size, as Nektar++ pairs them); the VTU's periodic_partner array
     marks every linked node.
+
+A pair within one face of a domain (tests/domain_faces.py circle_square:
+a disc inside the square [-1, 1]^2, two faces sharing the circle):
+`--periodic auto` pairs the square's opposite sides (two pairs, by the
+translations (0, 2) and (-2, 0)), all four curves of the outer face.  That
+face's layout puts its corners on the sides at places of its own, so each
+image side's vertices are slid onto its master's images and the face meshed again (docs/domains.md): both faces
+by the layout road, as many irregular vertices as without the pair (the
+slide moves vertices along the side only; the layout is the same), the
+links to 1e-12 of the size as above.
 usage: t642-periodic-domain.py SEMQUAD DOMAIN_FACES_PY"""
 import json
 import math
@@ -260,6 +270,33 @@ def check_writers(step, names_file, affine, size, tmp):
     return [int(v) for v in m.group(1).split()] if m else []
 
 
+def check_pair_within_face(tmp):
+    step = os.path.join(tmp, "circle_square.step")
+    subprocess.run([sys.executable, GEN, "circle_square", step], check=True, capture_output=True)
+    size = 2 * math.sqrt(2)  # the square's diagonal
+    plain, plain_rep = os.path.join(tmp, "cs.msh"), os.path.join(tmp, "cs.json")
+    msh, rep_path = os.path.join(tmp, "csp.msh"), os.path.join(tmp, "csp.json")
+    r0 = mesh(step, plain, ["--report", plain_rep])
+    r = mesh(step, msh, ["--periodic", "auto", "--report", rep_path])
+    if r0.returncode or r.returncode:
+        fails.append("circle_square: exit %d, with --periodic auto %d: %s"
+                     % (r0.returncode, r.returncode, r.stderr.strip()))
+        return
+    rep, n0 = json.load(open(rep_path)), json.load(open(plain_rep))["mesh"]["irregular_interior_vertices"]
+    pos, links, _, _ = read_gmsh(msh)
+    check_links(rep, pos, links, size)
+    m, roads = rep["mesh"], [f["road"] for f in rep["faces"]]
+    print("circle_square, --periodic auto: pairs %s, roads %s, %d quads, %d irregular (%d without "
+          "the pair), min scaled Jacobian %.3f" % ([p["edges"] for p in rep["periodic"]["pairs"]], roads,
+                                                    m["quads"], m["irregular_interior_vertices"], n0,
+                                                    m["min_scaled_jacobian"]))
+    if sorted(p["kind"] for p in rep["periodic"]["pairs"]) != ["translation"] * 2 or roads != ["layout"] * 2 or \
+            m["irregular_interior_vertices"] != n0 or m["inverted"] or not m["min_scaled_jacobian"] > 0:
+        fails.append("circle_square --periodic auto: pairs %s, roads %s, %d irregular (%d without), "
+                     "%d inverted" % (rep["periodic"]["pairs"], roads, m["irregular_interior_vertices"],
+                                      n0, m["inverted"]))
+
+
 def main():
     with tempfile.TemporaryDirectory() as tmp:
         step = os.path.join(tmp, "ring4.step")
@@ -317,6 +354,7 @@ def main():
         if sum(v >= 0 for v in partner) != len(linked):
             fails.append("VTU periodic_partner marks %d nodes, expected %d"
                          % (sum(v >= 0 for v in partner), len(linked)))
+        check_pair_within_face(tmp)
     for f in fails:
         print("FAIL", f)
     sys.exit(1 if fails else 0)

@@ -144,17 +144,18 @@ static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
     return st;
 }
 
-/* Where the faces' layouts put their corners on a shared curve at places
- * of their own (each face's own field: a disc and the square around it),
- * the counts agree but the vertices do not meet: each face after the
- * first is meshed again, at the same counts, with its vertices there slid
- * onto those of the face before it (docs/domains.md). */
+/* Where the faces' layouts put their corners on a shared curve or a
+ * periodic pair at places of their own (each face's own field: a disc and
+ * the square around it), the counts agree but the vertices do not meet:
+ * each face is meshed again, at the same counts, with its vertices there
+ * slid onto those of the face before it, and a pair's image side within
+ * one face onto its master's (docs/domains.md). */
 static sq_status slide_faces(const sq_model *m, const sq_domain *dm, faces_open *f,
                              const sq_options *o, int *const *minc, const char **road,
                              sq_error *err)
 {
     sq_status st = SQ_OK;
-    for (int k = 1; k < f->n && st == SQ_OK; k++) {
+    for (int k = 0; k < f->n && st == SQ_OK; k++) {
         if (!sq_domain_face_shares(dm, k)) continue;
         int ne = cad_face_num_edges(f->cad[k]), any = 0;
         sq_edge_points *ep = calloc((size_t)ne + 1, sizeof *ep);
@@ -200,6 +201,19 @@ static int agree_chords(const sq_domain *dm, sq_quad_mesh *const *q, int *const 
     return !differ ? 0 : raised ? 1 : -1;
 }
 
+/* The faces' meshes merged as d says and the pairs linked; *merged NULL
+ * and err where they do not meet. */
+static sq_status merge_linked(const sq_domain *d, const faces_open *f, const int *faces,
+                              const sq_options *o, const sq_periodic *per, sq_quad_mesh **merged,
+                              sq_error *err)
+{
+    sq_status st = sq_domain_merge(d, f->q, faces, o->size, merged, err);
+    if (st == SQ_OK && per->npairs)
+        st = sq_periodic_link(per, *merged, o->size, SQ_PERIODIC_NODE_REL_TOL, err);
+    if (st != SQ_OK) sq_quad_mesh_free(merged);
+    return st;
+}
+
 /* The faces sharing curves (in dm: shared curves and periodic pairs) by
  * the layout road, each alone with its shared curves' vertices held and
  * the chord counts agreed between rounds, merged as d says, the pairs
@@ -227,12 +241,10 @@ static sq_status try_layouts(const sq_model *m, const sq_domain *dm, const sq_do
     if (st == SQ_OK && changed)
         st = SQ_FAIL(err, SQ_ERR_LAYOUT, "the faces' chord counts on a shared curve differ after "
                      "%d rounds (a layout splits it at corners of its own)", r);
-    if (st == SQ_OK && sq_domain_merge(d, f->q, faces, o->size, merged, err) != SQ_OK) {
+    if (st == SQ_OK && merge_linked(d, f, faces, o, per, merged, err) != SQ_OK) {
         st = slide_faces(m, dm, f, &ol, minc, road, err);
-        if (st == SQ_OK) st = sq_domain_merge(d, f->q, faces, o->size, merged, err);
+        if (st == SQ_OK) st = merge_linked(d, f, faces, o, per, merged, err);
     }
-    if (st == SQ_OK && per->npairs)
-        st = sq_periodic_link(per, *merged, o->size, SQ_PERIODIC_NODE_REL_TOL, err);
     for (int k = 0; minc && k < f->n; k++) free(minc[k]);
     free(minc);
     if (st == SQ_OK) return SQ_OK;

@@ -60,9 +60,10 @@ sq_status sq_domain_mesh_split(const sq_domain *d, const sq_mesher_options *mo, 
 /* The layout road over the faces (docs/domains.md): face f's points
  * ep[e] (per edge of f, as sq_mesher_options.edge_points takes them: 0,
  * then the interior points in f's sense; on a closed curve all its vertices) on each shared curve whose other
- * face g comes before f, from its mesh q[g] (in g's frame, tags g's
- * edges): the arc lengths of g's vertices there, so f's vertices slide
- * onto them and the two meshes meet; n 0 on the other edges.  *any 1 if
+ * face g comes before f, and on the image side of a periodic pair whose
+ * master is in f too, from its mesh q[g] (in g's frame, tags g's edges):
+ * the arc lengths of g's vertices there, so f's vertices slide onto them
+ * and the two meshes meet; n 0 on the other edges.  *any 1 if
  * some edge has points.  Free with sq_domain_layout_points_free. */
 sq_status sq_domain_layout_points(const sq_domain *d, int f, sq_quad_mesh *const *q,
                                   sq_edge_points *ep, int *any, sq_error *err);

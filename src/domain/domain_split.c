@@ -272,7 +272,10 @@ sq_status sq_domain_layout_points(const sq_domain *d, int f, sq_quad_mesh *const
     for (int e = 0; e < ne && st == SQ_OK; e++) {
         const sq_domain_curve *cv = &d->curves[d->curve_of[f][e]];
         int side = cv->face[0] == f && cv->edge[0] == e, g = cv->face[side], eg = cv->edge[side];
-        if (cv->face[1] < 0 || g >= f || !q[g]) continue;
+        /* a periodic pair within f: its image side (side 1) slides onto the
+         * master's vertices of f's own mesh (held there, so kept when f is
+         * meshed again) */
+        if (cv->face[1] < 0 || g > f || (g == f && side) || !q[g]) continue;
         double L = cad_face_edge_length(d->faces[f], e), tol = SAME_ARC * L;
         /* a closed curve (a whole loop): its vertices wherever they are;
          * else its start, then the interior vertices */
