@@ -12,10 +12,11 @@ import time
 QUALITY_EXIT = 8  # semquad's status for a mesh written below the quality floor
 
 
-def run_mesh(semquad, step, workdir, tag, timeout, extra=()):
+def run_mesh(semquad, step, workdir, tag, timeout, extra=(), measure=None):
     """`semquad mesh STEP -q --report R -o M` (plus extra), killed after timeout s.
     Returns a dict: exit (None on timeout, -N on signal N), seconds, stderr_line,
-    and the report's figures when it was written."""
+    the report's figures when it was written, and measure(M) as "msh" when
+    measure is given and the mesh was written."""
     rep = os.path.join(workdir, tag + ".json")
     msh = os.path.join(workdir, tag + ".msh")
     for f in (rep, msh):
@@ -48,10 +49,95 @@ def run_mesh(semquad, step, workdir, tag, timeout, extra=()):
     # exit 8: the mesh is written but its worst quad is below --min-quality
     if code in (0, QUALITY_EXIT) and os.path.exists(rep):
         r.update(report_figures(rep))
+        if measure and os.path.exists(msh):
+            r["msh"] = measure(msh)
     for f in (rep, msh):
         if os.path.exists(f):
             os.remove(f)
     return r
+
+
+# Gmsh's quadrangle element types, orders 1-10 (complete and serendipity):
+# their first four nodes are the corners
+QUAD_TYPES = {3, 10, 16, 36, 37, 38, 39, 40, 41, 42, 43, 44, 45, 46, 47, 48, 49, 50, 51}
+
+
+def msh_elements(path):
+    """Nodes {tag: (x, y, z)} and 2D elements [(type, [node tags])] of an ASCII
+    MSH 4.1 file (Gmsh's and semquad's default format), read without Gmsh."""
+    with open(path) as f:
+        lines = iter(f.read().splitlines())
+    nodes, elems = {}, []
+    for ln in lines:
+        if ln.strip() == "$Nodes":
+            blocks = int(next(lines).split()[0])
+            for _ in range(blocks):
+                # x y z first on each line (parametric coordinates, when present, after them)
+                _dim, _tag, _param, cnt = map(int, next(lines).split())
+                tags = [int(next(lines)) for _ in range(cnt)]
+                for t in tags:
+                    x = next(lines).split()
+                    nodes[t] = (float(x[0]), float(x[1]), float(x[2]))
+        elif ln.strip() == "$Elements":
+            blocks = int(next(lines).split()[0])
+            for _ in range(blocks):
+                dim, _tag, typ, cnt = map(int, next(lines).split())
+                for _ in range(cnt):
+                    e = next(lines).split()
+                    if dim == 2:
+                        elems.append((typ, [int(v) for v in e[1:]]))
+    return nodes, elems
+
+
+def quad_figures(path):
+    """The same figures for any planar quad mesh, whoever wrote it (a face in a
+    tilted plane included): quads, other 2D elements, interior irregular
+    vertices (corners on other than 4 quads, not on a boundary edge: an edge of
+    one quad only), and the scaled Jacobian at the corners of the straight
+    corner quads (the cross product of the two sides over their lengths, signed
+    by the mesh's mean normal: min over the mesh, and the mean over the quads of
+    each quad's least), the measure Gmsh's and semquad's meshes share."""
+    nodes, elems = msh_elements(path)
+    quads = [c[:4] for t, c in elems if t in QUAD_TYPES]
+    out = {"quads": len(quads), "other": len(elems) - len(quads)}
+    if not quads:
+        return out
+    edges, valence = {}, {}
+    for q in quads:
+        for k in range(4):
+            a, b = q[k], q[(k + 1) % 4]
+            key = (min(a, b), max(a, b))
+            edges[key] = edges.get(key, 0) + 1
+            valence[a] = valence.get(a, 0) + 1
+    boundary = {v for e, n in edges.items() if n == 1 for v in e}
+    out["irregular"] = sum(1 for v, n in valence.items() if v not in boundary and n != 4)
+
+    def sub(a, b):
+        return (a[0] - b[0], a[1] - b[1], a[2] - b[2])
+
+    def cross(a, b):
+        return (a[1] * b[2] - a[2] * b[1], a[2] * b[0] - a[0] * b[2], a[0] * b[1] - a[1] * b[0])
+
+    normal = [0.0, 0.0, 0.0]
+    for q in quads:
+        c = cross(sub(nodes[q[2]], nodes[q[0]]), sub(nodes[q[3]], nodes[q[1]]))
+        normal = [normal[i] + c[i] for i in range(3)]
+    nn = sum(v * v for v in normal) ** 0.5 or 1.0
+    normal = [v / nn for v in normal]
+    worst = []
+    for q in quads:
+        least = 1.0
+        for k in range(4):
+            p, a, b = nodes[q[k]], nodes[q[(k + 1) % 4]], nodes[q[(k + 3) % 4]]
+            e1, e2 = sub(a, p), sub(b, p)
+            l1 = sum(v * v for v in e1) ** 0.5
+            l2 = sum(v * v for v in e2) ** 0.5
+            c = cross(e1, e2)
+            least = min(least, sum(c[i] * normal[i] for i in range(3)) / (l1 * l2) if l1 * l2 > 0 else -1.0)
+        worst.append(least)
+    out["min_sj"] = min(worst)
+    out["mean_sj"] = sum(worst) / len(worst)
+    return out
 
 
 def report_figures(path):

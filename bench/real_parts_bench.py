@@ -18,7 +18,8 @@ every scaled Jacobian > 0.  A file `info` cannot read counts as one failure.
 --peer CMD (or $SQ_QUADQS): a command run as `CMD FILE SIZE OUT.msh 1 FACE` per face
          (the calling convention of a Gmsh 4.13 quasi-structured wrapper: FACE is the
          0-based surface index in OCC's order), same size; covered when OUT.msh holds
-         quadrangles only.
+         quadrangles only.  Where both mesh a face, both MSH files are measured alike
+         (benchlib.quad_figures: interior irregular vertices, corner scaled Jacobians).
 Prints Markdown; --doc replaces (or appends) the section "Planar faces of real parts";
 --from-json writes the tables of an earlier --json run instead of meshing.
 """
@@ -128,24 +129,6 @@ def gmsh_file(path, faces, unit, timeout):
     return res
 
 
-def msh_types(path):
-    """{element type: count} of an ASCII MSH 4.1 file's 2D elements."""
-    n = {}
-    with open(path) as f:
-        lines = iter(f.read().splitlines())
-    for ln in lines:
-        if ln.strip() == "$Elements":
-            blocks = int(next(lines).split()[0])
-            for _ in range(blocks):
-                dim, _tag, typ, cnt = map(int, next(lines).split())
-                for _ in range(cnt):
-                    next(lines)
-                if dim == 2:
-                    n[typ] = n.get(typ, 0) + cnt
-            break
-    return n
-
-
 def peer_face(cmd, path, idx, area, unit, work, timeout):
     out = os.path.join(work, "peer_%d_%d.msh" % (os.getpid(), idx))
     env = dict(os.environ, QUADQS_UNIT=unit.upper())  # keep the file's unit, as semquad does
@@ -157,10 +140,9 @@ def peer_face(cmd, path, idx, area, unit, work, timeout):
     if p.returncode != 0 or not os.path.exists(out):
         err = [ln for ln in p.stderr.splitlines() if ln.strip()]
         return False, "exit %d: %s" % (p.returncode, err[-1][:80] if err else "")
-    n = msh_types(out)
+    fig = benchlib.quad_figures(out)
     os.remove(out)
-    quads = n.get(3, 0) + n.get(10, 0) + n.get(16, 0)
-    return quads > 0 and quads == sum(n.values()), "%d quads, %d other" % (quads, sum(n.values()) - quads)
+    return fig["quads"] > 0 and fig["other"] == 0, "%d quads, %d other" % (fig["quads"], fig["other"]), fig
 
 
 def run(args):
@@ -184,7 +166,8 @@ def run(args):
 
     def one(job):
         f, path, idx, area, unit = job
-        r = benchlib.run_mesh(args.semquad, path, work, "%s_%d" % (f, idx), args.timeout, ["--face", str(idx)])
+        r = benchlib.run_mesh(args.semquad, path, work, "%s_%d" % (f, idx), args.timeout, ["--face", str(idx)],
+                             measure=benchlib.quad_figures if args.peer else None)
         r.update({"file": f, "face": idx, "area": area})
         r["outcome"] = benchlib.outcome(r)
         if args.peer:
@@ -199,7 +182,10 @@ def run(args):
                   file=sys.stderr, flush=True)
     if args.gmsh:
         gmsh_stage(args, file_rows, rows)
-    os.rmdir(work)
+    try:
+        os.rmdir(work)
+    except OSError as e:  # a peer that bind-mounts its output's folder (a chroot) keeps it busy
+        print("left the empty folder %s: %s" % (work, e.strerror), file=sys.stderr)
     return file_rows, rows
 
 
@@ -216,6 +202,34 @@ def gmsh_stage(args, file_rows, rows):
         res = gmsh_file(path, [(r["face"], r["area"]) for r in rs], unit[f], args.timeout)
         for r in rs:
             r["gmsh"] = res[r["face"]]
+
+
+def peer_lines(got):
+    """semquad against the peer on the faces both mesh all-quad, each mesh's
+    figures from its MSH file by benchlib.quad_figures (one measure for both)."""
+    both = [r for r in got if r["outcome"] == "ok" and r["peer"][0] and len(r["peer"]) > 2 and "msh" in r]
+    if not both:
+        return []
+
+    def med(v):
+        v = sorted(v)
+        return v[len(v) // 2]
+
+    lines = ["", "On the %d faces both mesh (figures of the MSH files, corners only: `quad_figures` "
+             "of bench/benchlib.py):" % len(both), "",
+             "| mesher | quads | interior irregular (sum) | faces with 0 irregular | faces with fewer irregular "
+             "| median min scaled Jacobian | mean of each quad's least scaled Jacobian | worst scaled Jacobian |",
+             "|---|---|---|---|---|---|---|---|"]
+    for name, fig, other in (("semquad", lambda r: r["msh"], lambda r: r["peer"][2]),
+                             ("peer", lambda r: r["peer"][2], lambda r: r["msh"])):
+        lines.append("| %s | %d | %d | %d | %d | %.3f | %.3f | %.3f |" % (
+            name, sum(fig(r)["quads"] for r in both), sum(fig(r)["irregular"] for r in both),
+            sum(1 for r in both if fig(r)["irregular"] == 0),
+            sum(1 for r in both if fig(r)["irregular"] < other(r)["irregular"]),
+            med([fig(r)["min_sj"] for r in both]),
+            sum(fig(r)["mean_sj"] * fig(r)["quads"] for r in both) / sum(fig(r)["quads"] for r in both),
+            min(fig(r)["min_sj"] for r in both)))
+    return lines
 
 
 def markdown(file_rows, rows, args):
@@ -256,6 +270,8 @@ def markdown(file_rows, rows, args):
                          sum(1 for r in got if r[key][0] and r["outcome"] == "ok"),
                          sum(1 for r in got if r["outcome"] == "ok" and not r[key][0]),
                          sum(1 for r in got if r["outcome"] != "ok" and r[key][0]))]
+            if key == "peer":
+                lines += peer_lines(got)
         elif key == "peer":
             lines += ["", "No peer run here (`--peer CMD` or `$SQ_QUADQS`: a Gmsh 4.13 quasi-structured wrapper)."]
     return "\n".join(lines) + "\n"
