@@ -364,8 +364,8 @@ static void try_split_for_quality(sq_mesh *h, const sq_mesher_options *mo, const
 /* The layout road's mesh on an all-quad last-resort layout: kept only
  * when it is at or above the quality floor and has fewer interior
  * irregular vertices than the split road's (the road that would mesh the
- * face otherwise), or when the split road fails; else the split road's,
- * with why in road.reason. */
+ * face otherwise), as many with a worst quad no worse, or when the split
+ * road fails; else the split road's, with why in road.reason. */
 static void compare_all_quad(sq_mesh *h, const sq_mesher_options *mo, const sq_options *o)
 {
     double t_layout = h->t.mesh;
@@ -378,8 +378,11 @@ static void compare_all_quad(sq_mesh *h, const sq_mesher_options *mo, const sq_o
     sq_status st = split_road(h, mo, o, &split_err);
     h->t.mesh += t_layout;
     /* the layout road's also when the split road fails: a mesh either way */
+    const sq_quad_quality *sq = &h->quality;
     int better = st != SQ_OK || (lq->min_scaled_jacobian >= o->min_quality &&
-                                 lq->irregular_interior < h->quality.irregular_interior);
+                                 (lq->irregular_interior < sq->irregular_interior ||
+                                  (lq->irregular_interior == sq->irregular_interior &&
+                                   lq->min_scaled_jacobian >= sq->min_scaled_jacobian)));
     char tail[200];
     if (st == SQ_OK)
         snprintf(tail, sizeof tail, "%d interior irregular vertices, worst scaled Jacobian %.3g; "

@@ -87,15 +87,17 @@ static void split_mesh_free(split_mesh *s)
     memset(s, 0, sizeof *s);
 }
 
-/* The midpoint vertex of every triangle edge, once per edge (the lower
- * triangle of the two makes it): mid[3e+k]. */
-static sq_status midpoints(const cad_face *face, const sq_triangulation *tri, split_mesh *s,
-                           int *mid, sq_error *err)
+/* The midpoint vertex of every triangle edge but the pairs' diagonals
+ * (diag[e]: that edge of e, or -1), once per edge (the lower triangle of
+ * the two makes it): mid[3e+k]. */
+static sq_status midpoints(const cad_face *face, const sq_triangulation *tri, const int *diag,
+                           split_mesh *s, int *mid, sq_error *err)
 {
     const sem_tri_mesh *m = tri->mesh;
     for (int e = 0; e < m->ntris; e++)
         for (int k = 0; k < 3; k++) {
             int n = m->neigh[3 * e + k];
+            if (k == diag[e]) continue;
             if (n >= 0 && n < e) {
                 int a = m->tri[3 * e + k], kk = 0;
                 while (kk < 3 && m->tri[3 * n + (kk + 1) % 3] != a) kk++;
@@ -117,7 +119,111 @@ static sq_status midpoints(const cad_face *face, const sq_triangulation *tri, sp
     return SQ_OK;
 }
 
-/* Design 2. */
+/* The edge of triangle n that is triangle e's edge k (it runs the other
+ * way), or -1. */
+static int edge_across(const sem_tri_mesh *m, int e, int k, int n)
+{
+    int a = m->tri[3 * e + k];
+    for (int kk = 0; kk < 3; kk++)
+        if (m->tri[3 * n + (kk + 1) % 3] == a) return kk;
+    return -1;
+}
+
+/* The quad of the two triangles across e's edge k, counter-clockwise
+ * from that edge's first vertex: a, d (n's vertex off the edge), b, c
+ * (e's), with the triangle edges under its sides in es[4] (as 3t+k). */
+static void pair_quad(const sem_tri_mesh *m, int e, int k, int n, int kk, int c[4], int es[4])
+{
+    c[0] = m->tri[3 * e + k], c[1] = m->tri[3 * n + (kk + 2) % 3];
+    c[2] = m->tri[3 * e + (k + 1) % 3], c[3] = m->tri[3 * e + (k + 2) % 3];
+    es[0] = 3 * n + (kk + 1) % 3, es[1] = 3 * n + (kk + 2) % 3;
+    es[2] = 3 * e + (k + 1) % 3, es[3] = 3 * e + (k + 2) % 3;
+}
+
+/* eta = 1 - max |corner angle - 90 deg| / 90 deg of the straight quad c
+ * (Jezdimirovic 2021, Table 1); -1 if it is not strictly convex. */
+static double quad_eta(const double *xy, const int c[4])
+{
+    double worst = 0.0;
+    for (int i = 0; i < 4; i++) {
+        const double *p = &xy[2 * c[i]], *a = &xy[2 * c[(i + 1) % 4]], *b = &xy[2 * c[(i + 3) % 4]];
+        double u[2] = {a[0] - p[0], a[1] - p[1]}, v[2] = {b[0] - p[0], b[1] - p[1]};
+        double cr = u[0] * v[1] - u[1] * v[0];
+        if (!(cr > 0.0)) return -1.0;
+        worst = fmax(worst, fabs(atan2(cr, u[0] * v[0] + u[1] * v[1]) - M_PI_2));
+    }
+    return 1.0 - worst / M_PI_2;
+}
+
+typedef struct {
+    double eta;
+    int e, k;
+} pair_cand;
+
+/* best first; the lower triangle and edge at a tie, so the order is the
+ * same on every machine */
+static int cand_cmp(const void *x, const void *y)
+{
+    const pair_cand *a = x, *b = y;
+    if (a->eta != b->eta) return a->eta > b->eta ? -1 : 1;
+    return a->e != b->e ? (a->e < b->e ? -1 : 1) : (a->k < b->k ? -1 : a->k > b->k);
+}
+
+/* Design 2, first half: triangles paired across interior edges into
+ * quads, greedily, the best shaped first (Gmsh's recombination does it by
+ * a matching; the greedy pass leaves a few more triangles).  A pair must
+ * be a quad of corner angles within 30-150 deg (eta >= 1/3): split in
+ * four it gives quads no worse than a triangle's three.  diag[e]: the edge
+ * of e shared with its mate, or -1. */
+#define SQ_PAIR_MIN_ETA (1.0 / 3.0)
+
+static sq_status pair_triangles(const sem_tri_mesh *m, int *diag, sq_error *err)
+{
+    pair_cand *cand = malloc(sizeof *cand * (3 * (size_t)m->ntris + 1));
+    if (!cand) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    size_t nc = 0;
+    for (int e = 0; e < m->ntris; e++) {
+        diag[e] = -1;
+        for (int k = 0; k < 3; k++) {
+            int n = m->neigh[3 * e + k], kk = n > e ? edge_across(m, e, k, n) : -1, c[4], es[4];
+            if (kk < 0) continue;
+            pair_quad(m, e, k, n, kk, c, es);
+            double eta = quad_eta(m->vxy, c);
+            if (eta >= SQ_PAIR_MIN_ETA) cand[nc++] = (pair_cand){eta, e, k};
+        }
+    }
+    qsort(cand, nc, sizeof *cand, cand_cmp);
+    for (size_t i = 0; i < nc; i++) {
+        int e = cand[i].e, k = cand[i].k, n = m->neigh[3 * e + k];
+        if (diag[e] >= 0 || diag[n] >= 0) continue;
+        diag[e] = k, diag[n] = edge_across(m, e, k, n);
+    }
+    free(cand);
+    return SQ_OK;
+}
+
+/* The quads at the corners of one polygon (a triangle's 3 or a pair's 4
+ * corners c, midpoints md of the sides from corner i to i+1, tags tg of
+ * those sides) about its centre: corner i, the midpoint after it, the
+ * centre, the midpoint before it, counter-clockwise as the polygon. */
+static void corner_quads(split_mesh *s, const double *vxy, int nc, const int *c, const int *md,
+                         const int *tg, int block)
+{
+    int g = s->nv++;
+    s->xy[2 * g] = s->xy[2 * g + 1] = 0.0;
+    for (int i = 0; i < nc; i++)
+        for (int d = 0; d < 2; d++) s->xy[2 * g + d] += vxy[2 * c[i] + d] / nc;
+    for (int i = 0; i < nc; i++) {
+        int q = s->nq++, ip = (i + nc - 1) % nc;
+        int *qc = &s->quad[4 * q], *qt = &s->side_tag[4 * q];
+        qc[0] = c[i], qc[1] = md[i], qc[2] = g, qc[3] = md[ip];
+        qt[0] = tg[i], qt[1] = qt[2] = -1, qt[3] = tg[ip];
+        s->block[q] = block;
+    }
+}
+
+/* Design 2, second half: each pair split in four quads, each triangle
+ * left alone in three. */
 static sq_status split(const cad_face *face, const sq_triangulation *tri, split_mesh *s,
                        sq_error *err)
 {
@@ -128,30 +234,28 @@ static sq_status split(const cad_face *face, const sq_triangulation *tri, split_
     s->block = malloc(sizeof(int) * 3 * ((size_t)m->ntris + 1));
     s->side_tag = malloc(sizeof(int) * 12 * ((size_t)m->ntris + 1));
     int *mid = malloc(sizeof(int) * 3 * ((size_t)m->ntris + 1));
-    if (!s->xy || !s->quad || !s->block || !s->side_tag || !mid) {
-        free(mid);
+    int *diag = malloc(sizeof(int) * ((size_t)m->ntris + 1));
+    if (!s->xy || !s->quad || !s->block || !s->side_tag || !mid || !diag) {
+        free(mid), free(diag);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
     memcpy(s->xy, m->vxy, sizeof(double) * 2 * (size_t)m->nverts);
     s->nv = m->nverts;
-    sq_status st = midpoints(face, tri, s, mid, err);
+    sq_status st = pair_triangles(m, diag, err);
+    if (st == SQ_OK) st = midpoints(face, tri, diag, s, mid, err);
     for (int e = 0; e < m->ntris && st == SQ_OK; e++) {
-        int g = s->nv++;
-        const int *t = &m->tri[3 * e];
-        for (int d = 0; d < 2; d++)
-            s->xy[2 * g + d] = (m->vxy[2 * t[0] + d] + m->vxy[2 * t[1] + d] + m->vxy[2 * t[2] + d]) / 3.0;
-        /* the quad at vertex k: the vertex, the midpoint of edge k (to
-         * vertex k+1), the centroid, the midpoint of edge k+2 (from
-         * vertex k+2): counter-clockwise as the triangle */
-        for (int k = 0; k < 3; k++) {
-            int q = s->nq++, kp = (k + 2) % 3;
-            int *c = &s->quad[4 * q], *tg = &s->side_tag[4 * q];
-            c[0] = t[k], c[1] = mid[3 * e + k], c[2] = g, c[3] = mid[3 * e + kp];
-            tg[0] = m->btag[3 * e + k], tg[1] = tg[2] = -1, tg[3] = m->btag[3 * e + kp];
-            s->block[q] = e;
+        int c[4], es[4], md[4], tg[4], k = diag[e], n = k >= 0 ? m->neigh[3 * e + k] : -1;
+        if (n >= 0 && n < e) continue; /* the pair's lower triangle made it */
+        if (n >= 0) {
+            pair_quad(m, e, k, n, diag[n], c, es);
+        } else {
+            for (int i = 0; i < 3; i++) c[i] = m->tri[3 * e + i], es[i] = 3 * e + i;
         }
+        int nc = n >= 0 ? 4 : 3;
+        for (int i = 0; i < nc; i++) md[i] = mid[es[i]], tg[i] = m->btag[es[i]];
+        corner_quads(s, m->vxy, nc, c, md, tg, e);
     }
-    free(mid);
+    free(mid), free(diag);
     return st;
 }
 
