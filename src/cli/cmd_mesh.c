@@ -100,11 +100,6 @@ static sq_status run_mesh(sq_cli_args *a, sq_error *err)
     SQ_TRY(sq_cli_family_check(a, manifest, sizeof manifest, err));
     sq_model *m = NULL;
     SQ_TRY(sq_cli_open(a, &m, err));
-    sq_status fam = sq_cli_family_faces(a, m, err);
-    if (fam != SQ_OK) {
-        sq_model_free(&m);
-        return fam;
-    }
     sq_mesh *mesh = NULL;
     sq_status st = sq_model_mesh(m, a->faces, a->nfaces, &a->opt, &mesh, err);
     if (st == SQ_OK) st = write_outputs(mesh, a, named, family, err);
