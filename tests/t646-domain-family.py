@@ -29,14 +29,17 @@ ring sector cut into four faces sharing two arcs and two segments) with
     circle_square; ring4's four "face_N";
   - area: the faces' areas, the integral of det J of the elements' own
     maps (Gauss, exact for these polynomials), against the exact ones
-    (the disc pi/4; ring4's sum).  Estimate: the boundary of an element
-    of order Q on a curve interpolates it at Q+1 points, so the normal
-    gap is O(h^(Q+1)) along a length O(1): the area error is O(h^(Q+1)),
-    a rate of at least Q+1 between levels (GLL points give 2Q, the
-    observed 4.0 at Q=2).  Asserted at Q=2, where the errors (1e-6 ..
-    1e-12) stay far above round-off: each level's error at most 2^-(Q+1)
-    of the last's, with 2^0.25 for the constant's change between levels;
-    at Q=4 (errors near round-off) only |error| <= 1e-9 of the area;
+    (the disc pi/4; ring4's sum).  Estimate (docs/convergence-families.md,
+    "What converges"): the boundary of an element of order Q interpolates
+    its curve at GLL arc-length points, and the area error, the integral
+    of the normal gap, is O(h^(2Q)) (Lobatto quadrature's exactness);
+    a smooth curve (circles here) reaches that rate at once.  Asserted at
+    Q=2, where the errors (1e-6 .. 1e-12) stay far above round-off: each
+    level's error at most 2^-(2Q) of the last's, times 2^0.25 for the
+    constant's change between levels (observed rates 4.00); at Q=4
+    (errors at round-off) only |error| <= 1e-9 of the area.  New curve
+    nodes on the parent's polynomial instead of the curve would stall the
+    error at level 1's;
   - the manifest: its faces and face_area (the sum of the exact areas), one
     entry per file with the file's quads and nodes (dofs = nodes), h_area
     halving per level (to the area's own change, 1e-6), h_mean and h_max
@@ -165,9 +168,9 @@ def check_family(name, manifest, exact_area, size, groups, on_shared, measure):
                 fail("%s Q%d: a level-%d vertex is %.3g from every level-%d node" % (
                     name, q, l - 1, far, l))
             e0, e1 = abs(err[(l - 1, q)]), abs(err[(l, q)])
-            if q == 2 and not e1 <= e0 * 2.0 ** (0.25 - (q + 1)):
+            if q == 2 and not e1 <= e0 * 2.0 ** (0.25 - 2 * q):
                 fail("%s Q2: area error %.3g at level %d after %.3g (rate %.2f < %d)" % (
-                    name, e1, l, e0, math.log2(e0 / e1) if e1 else 99, q + 1))
+                    name, e1, l, e0, math.log2(e0 / e1) if e1 else 99, 2 * q))
         for l in levels:
             if q != 2 and abs(err[(l, q)]) > 1e-9 * exact_area[0]:
                 fail("%s Q%d L%d: area error %.3g" % (name, q, l, err[(l, q)]))
