@@ -11,9 +11,9 @@ ring sector cut into four faces sharing two arcs and two segments) with
 --levels 3 --orders 2.  Every file is read by Gmsh's reader
 (tests/msh_quad_stats.py):
 
-  - quads x4 from each level to the next; no triangle; no two corner nodes
-    closer than 1e-9 of the diameter (msh_quad_stats' duplicate count: the
-    nodes of a shared curve are one node, not one per face);
+  - quads x4 from each level to the next; no triangle; no two nodes (the
+    high-order ones too) closer than 1e-9 of the size (the nodes of a
+    shared curve are one node, not one per face);
   - nested: every corner vertex of level k is a node of level k+1 within
     1e-12 of the size (the vertices are copied and mapped into the
     domain's frame by the same operations at every level: they agree to
@@ -125,6 +125,10 @@ def check_file(name, e, size, groups_expected, on_shared):
         if not g[k][1] > 0:
             fail("%s: face %s has det J %g at a Gauss point" % (tag, k, g[k][1]))
     _, _, pos = msh_quad_stats.read_elements(path)
+    close = cKDTree(list(pos.values())).query_pairs(1e-9 * size)
+    if close:
+        fail("%s: %d pairs of nodes (high-order ones too) within 1e-9 of the size" % (tag,
+                                                                                   len(close)))
     shared = set()
     for i, a in enumerate(faces):
         for b in faces[i + 1:]:

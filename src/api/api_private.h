@@ -64,6 +64,9 @@ typedef struct {
                             own frame (a family refines these, domain_refine.c) */
 } sq_api_domain;
 void sq_api_domain_free(sq_api_domain **d);
+/* h->dom for nfaces faces and ncurves curves, its arrays allocated
+ * (quad_face for h->q's quads), no face's mesh yet. */
+sq_status sq_api_domain_new(sq_mesh *h, int nfaces, int ncurves, sq_error *err);
 
 /* The faces of a domain, open: their CAD faces and info (area, corners;
  * cusps refused), and a slot for each one's mesh (model_mesh.c). */

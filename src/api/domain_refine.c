@@ -56,18 +56,9 @@ static sq_status refined_domain(const sq_api_domain *a, domain_steps *s, sq_mesh
                                 sq_error *err)
 {
     int n = a->nfaces;
-    sq_api_domain *b = calloc(1, sizeof *b);
-    if (!(h->dom = b)) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    *b = (sq_api_domain){.nfaces = n, .ncurves = a->ncurves, .ntags = a->ntags,
-                         .rounds = a->rounds, .size = a->size};
-    b->face = malloc(sizeof(int) * (size_t)n);
-    b->road = malloc(sizeof(char *) * (size_t)n);
-    b->area = malloc(sizeof(double) * (size_t)n);
-    b->curves = malloc(sizeof *b->curves * ((size_t)a->ncurves + 1));
-    b->quad_face = malloc(sizeof(int) * ((size_t)h->q->nquads + 1));
-    b->q = calloc((size_t)n, sizeof *b->q);
-    if (!b->face || !b->road || !b->area || !b->curves || !b->quad_face || !b->q)
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    SQ_TRY(sq_api_domain_new(h, n, a->ncurves, err));
+    sq_api_domain *b = h->dom;
+    b->ntags = a->ntags, b->rounds = a->rounds, b->size = a->size;
     memcpy(b->face, a->face, sizeof(int) * (size_t)n);
     memcpy(b->road, a->road, sizeof(char *) * (size_t)n);
     memcpy(b->area, a->area, sizeof(double) * (size_t)n);

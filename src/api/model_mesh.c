@@ -326,26 +326,33 @@ static sq_status pairs_counted(const sq_periodic *per, sq_quad_mesh *q, const sq
 
 /* The domain's record in h->dom, its per-quad faces, and the faces'
  * meshes (taken from f) and size, for a family. */
-static sq_status keep_domain(sq_mesh *h, const sq_domain *d, sq_api_faces *f,
-                             const char **road, int rounds, double size, sq_error *err)
+sq_status sq_api_domain_new(sq_mesh *h, int nfaces, int ncurves, sq_error *err)
 {
     sq_api_domain *a = calloc(1, sizeof *a);
     if (!(h->dom = a)) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    a->nfaces = f->n;
-    a->face = malloc(sizeof(int) * (size_t)f->n);
-    a->road = malloc(sizeof(char *) * (size_t)f->n);
-    a->area = malloc(sizeof(double) * (size_t)f->n);
-    a->curves = malloc(sizeof *a->curves * ((size_t)d->ncurves + 1));
+    a->nfaces = nfaces, a->ncurves = ncurves;
+    a->face = malloc(sizeof(int) * (size_t)nfaces);
+    a->road = malloc(sizeof(char *) * (size_t)nfaces);
+    a->area = malloc(sizeof(double) * (size_t)nfaces);
+    a->curves = malloc(sizeof *a->curves * ((size_t)ncurves + 1));
     a->quad_face = malloc(sizeof(int) * ((size_t)h->q->nquads + 1));
-    a->q = calloc((size_t)f->n, sizeof *a->q);
+    a->q = calloc((size_t)nfaces, sizeof *a->q);
     if (!a->face || !a->road || !a->area || !a->curves || !a->quad_face || !a->q)
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    return SQ_OK;
+}
+
+static sq_status keep_domain(sq_mesh *h, const sq_domain *d, sq_api_faces *f,
+                             const char **road, int rounds, double size, sq_error *err)
+{
+    SQ_TRY(sq_api_domain_new(h, f->n, d->ncurves, err));
+    sq_api_domain *a = h->dom;
     for (int k = 0; k < f->n; k++)
         a->face[k] = f->face[k].index, a->road[k] = road[k], a->area[k] = f->info[k].area;
     for (int k = 0; k < f->n; k++) a->q[k] = f->q[k], f->q[k] = NULL;
     a->size = size;
     memcpy(a->curves, d->curves, sizeof *a->curves * (size_t)d->ncurves);
-    a->ncurves = d->ncurves, a->ntags = d->ntags, a->rounds = rounds;
+    a->ntags = d->ntags, a->rounds = rounds;
     for (int q = 0; q < h->q->nquads; q++) a->quad_face[q] = a->face[h->q->region[q]];
     return SQ_OK;
 }
