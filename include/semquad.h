@@ -506,9 +506,11 @@ SQ_API int sq_mesh_format_known(const char *path);
  * bit for bit.  Nothing is relaxed again (that would move m's vertices);
  * the quality is proven again, by the Bézier bounds (sq_mesh_scaled_jacobians,
  * sq_mesh_check_quality).  m's periodic links are found again on *out,
- * its image nodes set to the images of their masters.  SQ_ERR_USAGE when
- * the quads would exceed opt->max_quads (opt NULL: the defaults) and for a
- * mesh of several faces.  *out borrows m's model, not m. */
+ * its image nodes set to the images of their masters.  A mesh of several
+ * faces (sq_model_mesh): each face's mesh refined in its own frame, then
+ * merged as m was (the nodes of a shared curve one node), the faces'
+ * groups kept.  SQ_ERR_USAGE when the quads would exceed opt->max_quads
+ * (opt NULL: the defaults).  *out borrows m's model, not m. */
 SQ_API sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const sq_options *opt,
                                 sq_mesh **out, sq_error *err);
 
@@ -517,8 +519,9 @@ SQ_API sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const s
 SQ_API sq_status sq_mesh_edge_lengths(const sq_mesh *m, double *mean, double *max,
                                       sq_error *err);
 
-/* The manifest of a family of n meshes of one face (docs/convergence-
- * families.md): one JSON object, the input, the face's exact area and, per
+/* The manifest of a family of n meshes of one face or domain (docs/
+ * convergence-families.md): one JSON object, the input, the face's exact
+ * area (of a domain: its faces, and the sum of their areas) and, per
  * mesh, files[k], levels[k] (1: the mesh as made), its order, quads,
  * nodes, degrees of freedom of a scalar CG field of its order (its nodes),
  * h (sq_mesh_edge_lengths, and sqrt(area / quads)), area and least scaled

@@ -69,6 +69,32 @@ def area_and_angles(c, pos, sign=None):
     return area, np.mod(np.arctan2(sign * cross, dot), 2 * math.pi)
 
 
+def face_groups(path, rule="Gauss20"):
+    """Per physical surface group of the file (a domain's faces): {name:
+    (area, least det J, set of the node tags of its elements, high-order
+    nodes included)}, the area the integral of det J of the elements' own
+    maps by Gmsh's Gauss rule `rule` (exact for a polynomial det J of that
+    degree per variable), det J at the same points."""
+    gmsh.initialize(["-v", "0"])
+    gmsh.option.setNumber("General.Terminal", 0)
+    gmsh.open(path)
+    out = {}
+    for dim, tag in gmsh.model.getPhysicalGroups(2):
+        area, least, nodes = 0.0, math.inf, set()
+        for ent in gmsh.model.getEntitiesForPhysicalGroup(dim, tag):
+            for etype in gmsh.model.mesh.getElementTypes(2, ent):
+                lc, w = gmsh.model.mesh.getIntegrationPoints(etype, rule)
+                _, det, _ = gmsh.model.mesh.getJacobians(etype, lc, ent)
+                det = np.array(det).reshape(-1, len(w))
+                area += float((det * np.array(w)).sum())
+                least = min(least, float(det.min()))
+                _, enodes = gmsh.model.mesh.getElementsByType(etype, ent)
+                nodes.update(int(t) for t in enodes)
+        out[gmsh.model.getPhysicalName(dim, tag)] = (area, least, nodes)
+    gmsh.finalize()
+    return out
+
+
 def periodic_pairs(msh, size):
     """The $Periodic section as Gmsh's reader gives it: {image curve (0-based):
     (master curve, affine 4x4 rows, largest |T(x_master) - x| / size, pairs,

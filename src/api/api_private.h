@@ -59,8 +59,47 @@ typedef struct {
     int ncurves, ntags, rounds;
     sq_domain_curve *curves;
     int *quad_face;      /* per quad: its CAD face (sq_mesh_quad_faces) */
+    double size;         /* the size the faces were meshed at (the merge's tolerance) */
+    sq_quad_mesh **q;    /* per face: the mesh merged into the handle's, in the face's
+                            own frame (a family refines these, domain_refine.c) */
 } sq_api_domain;
 void sq_api_domain_free(sq_api_domain **d);
+/* h->dom for nfaces faces and ncurves curves, its arrays allocated
+ * (quad_face for h->q's quads), no face's mesh yet. */
+sq_status sq_api_domain_new(sq_mesh *h, int nfaces, int ncurves, sq_error *err);
+
+/* The faces of a domain, open: their CAD faces and info (area, corners;
+ * cusps refused), and a slot for each one's mesh (model_mesh.c). */
+typedef struct {
+    int n;
+    sq_api_face *face;
+    const cad_face **cad;
+    sq_face_info *info;
+    sq_quad_mesh **q;
+} sq_api_faces;
+sq_status sq_api_faces_load(const sq_model *m, const int *faces, int n, const sq_options *o,
+                            sq_api_faces *f, sq_error *err);
+void sq_api_faces_close(sq_api_faces *f);
+/* The tolerance of the domain's coincident curves at mesh size `size`. */
+double sq_api_domain_tolerance(const sq_model *m, double size);
+
+/* A family's step (mesh_family.c): from's quads split n × n (n = 1: the
+ * same quads) at order into *out. */
+typedef sq_status (*sq_api_refine_step)(void *ctx, const sq_quad_mesh *from, int n, int order,
+                                        int threads, sq_quad_mesh **out, sq_error *err);
+/* m's mesh refined `levels` times by step, then taken to `order`: each
+ * level's periodic links found again, m's names kept; *out the last. */
+sq_status sq_api_refine_levels(const sq_mesh *m, int levels, int order, const sq_options *o,
+                               sq_api_refine_step step, void *ctx, sq_quad_mesh **out,
+                               sq_error *err);
+/* A handle for q (handed over), made from m (its face, road, threads). */
+sq_status sq_api_refined_handle(const sq_mesh *m, sq_quad_mesh *q, sq_mesh **out, sq_error *err);
+
+/* sq_mesh_refine of a mesh of several faces (domain_refine.c): each
+ * face's mesh refined in its own frame, then merged as sq_model_mesh
+ * merges them, the periodic links found again. */
+sq_status sq_api_domain_refine(const sq_mesh *m, int levels, int order, const sq_options *o,
+                               sq_mesh **out, sq_error *err);
 
 struct sq_mesh {
     sq_api_face face; /* of a domain: its first face (the frame, the model) */

@@ -13,8 +13,7 @@
 #include <stdlib.h>
 #include <string.h>
 
-/* A handle for the refined mesh q of m's face (q handed over). */
-static sq_status refined_handle(const sq_mesh *m, sq_quad_mesh *q, sq_mesh **out, sq_error *err)
+sq_status sq_api_refined_handle(const sq_mesh *m, sq_quad_mesh *q, sq_mesh **out, sq_error *err)
 {
     sq_mesh *h = calloc(1, sizeof *h);
     if (!h || !(h->t_write = calloc(1, sizeof *h->t_write))) {
@@ -37,28 +36,11 @@ static sq_status refined_handle(const sq_mesh *m, sq_quad_mesh *q, sq_mesh **out
     return st;
 }
 
-sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const sq_options *o,
-                         sq_mesh **out, sq_error *err)
+sq_status sq_api_refine_levels(const sq_mesh *m, int levels, int order, const sq_options *o,
+                               sq_api_refine_step step, void *ctx, sq_quad_mesh **out,
+                               sq_error *err)
 {
     *out = NULL;
-    sq_options def;
-    o = sq_api_options(o, &def);
-    if (order == 0) order = m->q->order;
-    if (levels < 0 || order < 1 || order > 10)
-        return SQ_FAIL(err, SQ_ERR_USAGE, "refinement: %d levels (0 or more), order %d (1..10)",
-                       levels, order);
-    /* a domain's shared curves would have to be split alike in every face */
-    if (m->dom && m->dom->nfaces > 1)
-        return SQ_FAIL(err, SQ_ERR_USAGE,
-                       "refinement of a mesh of %d faces is not supported yet: mesh one face "
-                       "(--face N) for a family",
-                       m->dom->nfaces);
-    if ((double)m->q->nquads * pow(4.0, levels) > o->max_quads)
-        return SQ_FAIL(err, SQ_ERR_USAGE,
-                       "%d quads split 2 x 2 %d time%s give %.0f quads, more than --max-quads %.3g",
-                       m->q->nquads, levels, levels == 1 ? "" : "s",
-                       (double)m->q->nquads * pow(4.0, levels), o->max_quads);
-    const cad_face *face = m->face.cad;
     sq_quad_mesh *q = NULL;
     /* level by level at m's order, so each level's vertices are the last's;
      * periodic links found again on each (the new nodes of a pair's curves
@@ -70,8 +52,8 @@ sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const sq_optio
     for (int k = 0; k < steps; k++) {
         const int split = k < levels;
         sq_quad_mesh *next = NULL;
-        sq_status st = sq_quad_mesh_refine(face, from, split ? 2 : 1, split ? m->q->order : order,
-                                           o->threads, &next, err);
+        sq_status st = step(ctx, from, split ? 2 : 1, split ? m->q->order : order, o->threads,
+                            &next, err);
         if (st == SQ_OK)
             st = sq_periodic_relink(m->q, next, sqrt(m->quality.area / next->nquads),
                                     SQ_PERIODIC_NODE_REL_TOL, err);
@@ -82,9 +64,44 @@ sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const sq_optio
         }
         from = q = next;
     }
+    /* the curves' and faces' names, as m's (its tags and faces are q's) */
+    sq_status st = sq_quad_mesh_copy_names(q, m->q, err);
+    if (st != SQ_OK) {
+        sq_quad_mesh_free(&q);
+        return st;
+    }
     sq_api_log(o, SQ_LOG_INFO, "refined %d quads of order %d to %d of order %d", m->q->nquads,
                m->q->order, q->nquads, q->order);
-    return refined_handle(m, q, out, err);
+    *out = q;
+    return SQ_OK;
+}
+
+/* One face's step: its mesh's quads refined on its CAD face. */
+static sq_status face_step(void *ctx, const sq_quad_mesh *from, int n, int order, int threads,
+                           sq_quad_mesh **out, sq_error *err)
+{
+    return sq_quad_mesh_refine(ctx, from, n, order, threads, out, err);
+}
+
+sq_status sq_mesh_refine(const sq_mesh *m, int levels, int order, const sq_options *o,
+                         sq_mesh **out, sq_error *err)
+{
+    *out = NULL;
+    sq_options def;
+    o = sq_api_options(o, &def);
+    if (order == 0) order = m->q->order;
+    if (levels < 0 || order < 1 || order > 10)
+        return SQ_FAIL(err, SQ_ERR_USAGE, "refinement: %d levels (0 or more), order %d (1..10)",
+                       levels, order);
+    if ((double)m->q->nquads * pow(4.0, levels) > o->max_quads)
+        return SQ_FAIL(err, SQ_ERR_USAGE,
+                       "%d quads split 2 x 2 %d time%s give %.0f quads, more than --max-quads %.3g",
+                       m->q->nquads, levels, levels == 1 ? "" : "s",
+                       (double)m->q->nquads * pow(4.0, levels), o->max_quads);
+    if (m->dom) return sq_api_domain_refine(m, levels, order, o, out, err);
+    sq_quad_mesh *q = NULL;
+    SQ_TRY(sq_api_refine_levels(m, levels, order, o, face_step, m->face.cad, &q, err));
+    return sq_api_refined_handle(m, q, out, err);
 }
 
 sq_status sq_mesh_edge_lengths(const sq_mesh *m, double *mean, double *max, sq_error *err)
@@ -134,8 +151,19 @@ sq_status sq_mesh_family_write_manifest(const char *path, int n, const sq_mesh *
     sq_json_begin_object(&j);
     sq_json_key_string(&j, "input", m0->face.model->path);
     sq_json_key_int(&j, "face", m0->face.index);
+    /* a domain: its faces, and the sum of their exact areas */
+    double area = m0->dom ? 0.0 : m0->info.area;
+    if (m0->dom) {
+        sq_json_key(&j, "faces");
+        sq_json_begin_array(&j);
+        for (int k = 0; k < m0->dom->nfaces; k++) {
+            sq_json_int(&j, m0->dom->face[k]);
+            area += m0->dom->area[k];
+        }
+        sq_json_end_array(&j);
+    }
     sq_json_key_string(&j, "unit", cad_model_unit(m0->face.model->cad));
-    sq_json_key_number(&j, "face_area", m0->info.area);
+    sq_json_key_number(&j, "face_area", area);
     sq_json_key_string(&j, "road", m0->road.name);
     sq_json_key(&j, "meshes");
     sq_json_begin_array(&j);

@@ -15,6 +15,8 @@ void sq_api_domain_free(sq_api_domain **d)
     free((*d)->area);
     free((*d)->curves);
     free((*d)->quad_face);
+    for (int k = 0; (*d)->q && k < (*d)->nfaces; k++) sq_quad_mesh_free(&(*d)->q[k]);
+    free((*d)->q);
     free(*d);
     *d = NULL;
 }
@@ -34,16 +36,7 @@ static sq_status planar_faces(const sq_model *m, int **faces, int *n, sq_error *
     return SQ_OK;
 }
 
-/* The faces' own data: open, their info (area, corners), cusps refused. */
-typedef struct {
-    int n;
-    sq_api_face *face;
-    const cad_face **cad;
-    sq_face_info *info;
-    sq_quad_mesh **q;
-} faces_open;
-
-static void faces_close(faces_open *f)
+void sq_api_faces_close(sq_api_faces *f)
 {
     for (int k = 0; k < f->n; k++) {
         sq_api_face_close(&f->face[k]);
@@ -53,8 +46,8 @@ static void faces_close(faces_open *f)
     free(f->face), free(f->cad), free(f->info), free(f->q);
 }
 
-static sq_status faces_load(const sq_model *m, const int *faces, int n, const sq_options *o,
-                            faces_open *f, sq_error *err)
+sq_status sq_api_faces_load(const sq_model *m, const int *faces, int n, const sq_options *o,
+                            sq_api_faces *f, sq_error *err)
 {
     f->n = 0;
     f->face = calloc((size_t)n, sizeof *f->face);
@@ -78,8 +71,13 @@ static sq_status faces_load(const sq_model *m, const int *faces, int n, const sq
     return SQ_OK;
 }
 
+double sq_api_domain_tolerance(const sq_model *m, double size)
+{
+    return fmax(cad_model_heal_tolerance(m->cad), 1e-6 * size);
+}
+
 /* Face k's held edges (its shared curves), allocated; NULL: out of memory. */
-static int *held_edges(const sq_domain *d, const faces_open *f, int k)
+static int *held_edges(const sq_domain *d, const sq_api_faces *f, int k)
 {
     int ne = cad_face_num_edges(f->cad[k]);
     int *held = calloc((size_t)ne + 1, sizeof(int));
@@ -88,7 +86,7 @@ static int *held_edges(const sq_domain *d, const faces_open *f, int k)
 }
 
 /* Face k's mesh h taken into f->q[k] (h freed), its road noted. */
-static void take_face(faces_open *f, int k, sq_mesh **h, const char **road)
+static void take_face(sq_api_faces *f, int k, sq_mesh **h, const char **road)
 {
     road[k] = !strcmp((*h)->road.name, "split") ? "split" : "layout";
     sq_quad_mesh_free(&f->q[k]);
@@ -100,7 +98,7 @@ static void take_face(faces_open *f, int k, sq_mesh **h, const char **road)
 /* Face k by its own roads (as o says) at the domain's size, the vertices
  * on its shared curves held, at least minc[k][e] chords on its edges, its
  * vertices on edge e slid onto ep[e]; its mesh into f->q[k]. */
-static sq_status mesh_one(const sq_model *m, const sq_domain *d, faces_open *f, int k,
+static sq_status mesh_one(const sq_model *m, const sq_domain *d, sq_api_faces *f, int k,
                           const sq_options *o, int *const *minc, const sq_edge_points *ep,
                           const char **road, sq_error *err)
 {
@@ -117,7 +115,7 @@ static sq_status mesh_one(const sq_model *m, const sq_domain *d, faces_open *f, 
  * own roads (as o says) at the domain's size, the vertices on its shared
  * curves held, at least minc[k][e] chords on its edges (minc NULL: none),
  * on threads (sq_api_faces_mesh); their meshes taken into f->q. */
-static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
+static sq_status mesh_each(const sq_model *m, const sq_domain *d, sq_api_faces *f,
                            const sq_options *o, int shares, int *const *minc, const char **road,
                            sq_error *err)
 {
@@ -150,7 +148,7 @@ static sq_status mesh_each(const sq_model *m, const sq_domain *d, faces_open *f,
  * each face is meshed again, at the same counts, with its vertices there
  * slid onto those of the face before it, and a pair's image side within
  * one face onto its master's (docs/domains.md). */
-static sq_status slide_faces(const sq_model *m, const sq_domain *dm, faces_open *f,
+static sq_status slide_faces(const sq_model *m, const sq_domain *dm, sq_api_faces *f,
                              const sq_options *o, int *const *minc, const char **road,
                              sq_error *err)
 {
@@ -203,7 +201,7 @@ static int agree_chords(const sq_domain *dm, sq_quad_mesh *const *q, int *const 
 
 /* The faces' meshes merged as d says and the pairs linked; *merged NULL
  * and err where they do not meet. */
-static sq_status merge_linked(const sq_domain *d, const faces_open *f, const int *faces,
+static sq_status merge_linked(const sq_domain *d, const sq_api_faces *f, const int *faces,
                               const sq_options *o, const sq_periodic *per, sq_quad_mesh **merged,
                               sq_error *err)
 {
@@ -221,7 +219,7 @@ static sq_status merge_linked(const sq_domain *d, const faces_open *f, const int
  * shared curve and pair (three rectangles in a row, the ring's four
  * sectors); *merged NULL and err where they do not. */
 static sq_status try_layouts(const sq_model *m, const sq_domain *dm, const sq_domain *d,
-                             faces_open *f, const sq_options *o, const int *faces,
+                             sq_api_faces *f, const sq_options *o, const int *faces,
                              const sq_periodic *per, const char **road, sq_quad_mesh **merged,
                              sq_error *err)
 {
@@ -266,7 +264,7 @@ static sq_status find_pairs(const sq_domain *d, const sq_options *o, sq_periodic
 
 /* The split road over dm's sharing faces, merged as d says, the pairs
  * linked. */
-static sq_status split_domain(const sq_domain *dm, const sq_domain *d, faces_open *f,
+static sq_status split_domain(const sq_domain *dm, const sq_domain *d, sq_api_faces *f,
                               const sq_mesher_options *mo, const int *faces, double size,
                               const sq_periodic *per, const char **road, int *rounds,
                               sq_quad_mesh **q, sq_error *err)
@@ -283,7 +281,7 @@ static sq_status split_domain(const sq_domain *dm, const sq_domain *d, faces_ope
  * is tried and the mesh whose worst scaled Jacobian is the larger kept,
  * the layout road's on a tie or when the split road fails, as for one
  * face (face_mesh.c). */
-static sq_status floor_domain(const sq_domain *dm, const sq_domain *d, faces_open *f,
+static sq_status floor_domain(const sq_domain *dm, const sq_domain *d, sq_api_faces *f,
                               const sq_mesher_options *mo, const int *faces, const sq_options *o,
                               const sq_periodic *per, const char **road, int *rounds,
                               sq_quad_mesh **q, sq_error *err)
@@ -294,10 +292,15 @@ static sq_status floor_domain(const sq_domain *dm, const sq_domain *d, faces_ope
     sq_api_log(o, SQ_LOG_NOTE, "the layout road's worst quad has scaled Jacobian %.3g < "
                "--min-quality %g; trying the split road", lq.min_scaled_jacobian, o->min_quality);
     const char **kept = malloc(sizeof *kept * ((size_t)f->n + 1));
-    if (!kept) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    sq_quad_mesh **layout = calloc((size_t)f->n + 1, sizeof *layout); /* the faces' meshes q
+                                                                         was merged from */
+    if (!kept || !layout) {
+        free(kept), free(layout);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
     memcpy(kept, road, sizeof *kept * (size_t)f->n);
     for (int k = 0; k < f->n; k++)
-        if (sq_domain_face_shares(dm, k)) sq_quad_mesh_free(&f->q[k]);
+        if (sq_domain_face_shares(dm, k)) layout[k] = f->q[k], f->q[k] = NULL;
     sq_quad_mesh *split = NULL;
     sq_error e2;
     sq_error_clear(&e2);
@@ -315,8 +318,11 @@ static sq_status floor_domain(const sq_domain *dm, const sq_domain *d, faces_ope
                    s2 == SQ_OK ? "is no better" : e2.msg);
         sq_quad_mesh_free(&split);
         memcpy(road, kept, sizeof *kept * (size_t)f->n);
+        for (int k = 0; k < f->n; k++)
+            if (layout[k]) sq_quad_mesh_free(&f->q[k]), f->q[k] = layout[k], layout[k] = NULL;
     }
-    free(kept);
+    for (int k = 0; k < f->n; k++) sq_quad_mesh_free(&layout[k]);
+    free(kept), free(layout);
     return SQ_OK;
 }
 
@@ -330,24 +336,35 @@ static sq_status pairs_counted(const sq_periodic *per, sq_quad_mesh *q, const sq
     return SQ_OK;
 }
 
-/* The domain's record in h->dom, and its per-quad faces. */
-static sq_status keep_domain(sq_mesh *h, const sq_domain *d, const faces_open *f,
-                             const char **road, int rounds, sq_error *err)
+/* The domain's record in h->dom, its per-quad faces, and the faces'
+ * meshes (taken from f) and size, for a family. */
+sq_status sq_api_domain_new(sq_mesh *h, int nfaces, int ncurves, sq_error *err)
 {
     sq_api_domain *a = calloc(1, sizeof *a);
     if (!(h->dom = a)) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    a->nfaces = f->n;
-    a->face = malloc(sizeof(int) * (size_t)f->n);
-    a->road = malloc(sizeof(char *) * (size_t)f->n);
-    a->area = malloc(sizeof(double) * (size_t)f->n);
-    a->curves = malloc(sizeof *a->curves * ((size_t)d->ncurves + 1));
+    a->nfaces = nfaces, a->ncurves = ncurves;
+    a->face = malloc(sizeof(int) * (size_t)nfaces);
+    a->road = malloc(sizeof(char *) * (size_t)nfaces);
+    a->area = malloc(sizeof(double) * (size_t)nfaces);
+    a->curves = malloc(sizeof *a->curves * ((size_t)ncurves + 1));
     a->quad_face = malloc(sizeof(int) * ((size_t)h->q->nquads + 1));
-    if (!a->face || !a->road || !a->area || !a->curves || !a->quad_face)
+    a->q = calloc((size_t)nfaces, sizeof *a->q);
+    if (!a->face || !a->road || !a->area || !a->curves || !a->quad_face || !a->q)
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    return SQ_OK;
+}
+
+static sq_status keep_domain(sq_mesh *h, const sq_domain *d, sq_api_faces *f,
+                             const char **road, int rounds, double size, sq_error *err)
+{
+    SQ_TRY(sq_api_domain_new(h, f->n, d->ncurves, err));
+    sq_api_domain *a = h->dom;
     for (int k = 0; k < f->n; k++)
         a->face[k] = f->face[k].index, a->road[k] = road[k], a->area[k] = f->info[k].area;
+    for (int k = 0; k < f->n; k++) a->q[k] = f->q[k], f->q[k] = NULL;
+    a->size = size;
     memcpy(a->curves, d->curves, sizeof *a->curves * (size_t)d->ncurves);
-    a->ncurves = d->ncurves, a->ntags = d->ntags, a->rounds = rounds;
+    a->ntags = d->ntags, a->rounds = rounds;
     for (int q = 0; q < h->q->nquads; q++) a->quad_face[q] = a->face[h->q->region[q]];
     return SQ_OK;
 }
@@ -395,14 +412,14 @@ static sq_status domain_sizes_check(const sq_domain *d, int n, const sq_options 
 static sq_status mesh_domain(const sq_model *m, const int *faces, int n, const sq_options *o,
                              sq_mesh *h, sq_error *err)
 {
-    faces_open f = {0};
+    sq_api_faces f = {0};
     sq_domain d = {0}, ds = {0};
     sq_periodic per = {0};
     sq_mesher_options mo;
     sq_options os = *o;
     const char **road = calloc((size_t)n, sizeof *road);
     int rounds = 0;
-    sq_status st = road ? faces_load(m, faces, n, o, &f, err)
+    sq_status st = road ? sq_api_faces_load(m, faces, n, o, &f, err)
                         : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     /* one size for all: the faces sharing a curve discretize it alike; by
      * default the smallest face's own default, so none is coarser than alone */
@@ -413,7 +430,7 @@ static sq_status mesh_domain(const sq_model *m, const int *faces, int n, const s
     if (st == SQ_OK) st = sq_api_mesher_options(&os, &mo, err);
     h->progress = mo.progress;
     if (st == SQ_OK) h->face = f.face[0], f.face[0].cad = NULL, f.cad[0] = h->face.cad;
-    double tol = fmax(cad_model_heal_tolerance(m->cad), 1e-6 * os.size);
+    double tol = sq_api_domain_tolerance(m, os.size);
     if (st == SQ_OK) st = sq_domain_build(n, f.cad, f.info, tol, &d, err);
     if (st == SQ_OK) st = domain_sizes_check(&d, n, &os, err);
     if (st == SQ_OK && d.ninterfaces > 0)
@@ -442,11 +459,11 @@ static sq_status mesh_domain(const sq_model *m, const int *faces, int n, const s
         st = split_domain(dm, &d, &f, &mo, faces, os.size, &per, road, &rounds, &h->q, err);
     if (st == SQ_OK && per.npairs) st = pairs_counted(&per, h->q, o, err);
     if (st == SQ_OK) st = sq_api_file_names(h->q, m->cad, f.cad, d.curves, d.ncurves, err);
-    if (st == SQ_OK) st = keep_domain(h, &d, &f, road, rounds, err);
+    if (st == SQ_OK) st = keep_domain(h, &d, &f, road, rounds, os.size, err);
     sq_periodic_free(&per);
     sq_domain_free(&ds);
     sq_domain_free(&d);
-    faces_close(&f);
+    sq_api_faces_close(&f);
     free(road);
     return st;
 }

@@ -234,13 +234,11 @@ void sq_cli_progress_clear(sq_cli_progress *p);
  * name goes into manifest[n]); then, from the mesh as made (level 1),
  * every file of the family and its manifest, one line per file on stdout;
  * SQ_ERR_QUALITY if a file's worst quad is below the floor (after writing
- * them all). sq_cli_family_faces refuses a family of several faces before
- * meshing. */
+ * them all). */
 /* The format sq_mesh_write_format gets for mesh's file: --format's (NULL:
  * by the extension), "msh-binary" or "xml-compressed" with --binary (cmd_mesh.c). */
 const char *sq_cli_mesh_format(const sq_cli_args *a);
 sq_status sq_cli_family_check(sq_cli_args *a, char *manifest, size_t n, sq_error *err);
-sq_status sq_cli_family_faces(const sq_cli_args *a, const sq_model *m, sq_error *err);
 sq_status sq_cli_family_write(const sq_mesh *mesh, const sq_cli_args *a, sq_error *err);
 
 /* Check the options (a usage error before any work), then read a->input. */

@@ -100,11 +100,6 @@ static sq_status run_mesh(sq_cli_args *a, sq_error *err)
     SQ_TRY(sq_cli_family_check(a, manifest, sizeof manifest, err));
     sq_model *m = NULL;
     SQ_TRY(sq_cli_open(a, &m, err));
-    sq_status fam = sq_cli_family_faces(a, m, err);
-    if (fam != SQ_OK) {
-        sq_model_free(&m);
-        return fam;
-    }
     sq_mesh *mesh = NULL;
     sq_status st = sq_model_mesh(m, a->faces, a->nfaces, &a->opt, &mesh, err);
     if (st == SQ_OK) st = write_outputs(mesh, a, named, family, err);
@@ -208,7 +203,8 @@ static const sq_cli_opt mesh_opts[] = {
     {.name = "levels", .kind = SQ_CLI_INT, .value = "L", .lo = 1, .hi = 10,
      .def = "none (one mesh)",
      .help = "a nested family for convergence studies: STEM_L1.msh (the mesh) .. STEM_LL.msh, "
-             "every quad of a level split 2 x 2 in the next (STEM: -o without extension)",
+             "every quad of a level split 2 x 2 in the next (STEM: -o without extension); "
+             "a domain of several faces too, face by face, merged again",
      .target = SQ_CLI_AT(levels)},
     {.name = "orders", .kind = SQ_CLI_CUSTOM, .value = "Q1,Q2,...", .def = "none",
      .help = "the same quads at each order (1..10): STEM_Q4.msh ..; with --levels STEM_L2_Q4.msh ..",

@@ -34,24 +34,6 @@ static sq_status family_name(const sq_cli_args *a, int level, int order, char *b
 static int family_levels(const sq_cli_args *a) { return a->levels ? a->levels : 1; }
 static int family_orders(const sq_cli_args *a) { return a->norders ? a->norders : 1; }
 
-/* A family refines one face's quads: refused before any meshing when the
- * faces to mesh (--face, else every planar face) are several. */
-sq_status sq_cli_family_faces(const sq_cli_args *a, const sq_model *m, sq_error *err)
-{
-    if (!a->levels && !a->norders) return SQ_OK;
-    int n = a->nfaces;
-    for (int f = 0; !a->nfaces && f < sq_model_num_faces(m); f++) {
-        const char *s = sq_model_face_status(m, f, NULL);
-        n += !strcmp(s, "ok") || !strcmp(s, "healed");
-    }
-    if (n > 1)
-        return SQ_FAIL(err, SQ_ERR_USAGE,
-                       "refinement of a mesh of %d faces is not supported yet: mesh one face "
-                       "(--face N) for a family",
-                       n);
-    return SQ_OK;
-}
-
 sq_status sq_cli_family_check(sq_cli_args *a, char *manifest, size_t n, sq_error *err)
 {
     if (!a->levels && !a->norders) {

@@ -81,6 +81,29 @@ sq_status sq_quad_mesh_set_regions(sq_quad_mesh *m, int nregions, sq_error *err)
     return SQ_OK;
 }
 
+/* A copy of n names (NULL entries kept), or NULL with *ok 0. */
+static char **copy_names(char *const *src, int n, int *ok)
+{
+    char **d = calloc((size_t)n + 1, sizeof *d);
+    *ok = d != NULL;
+    for (int k = 0; d && k < n; k++)
+        if (src[k] && !(d[k] = strdup(src[k]))) *ok = 0;
+    return d;
+}
+
+sq_status sq_quad_mesh_copy_names(sq_quad_mesh *dst, const sq_quad_mesh *src, sq_error *err)
+{
+    int ok = 1, ok2 = 1;
+    if (dst->tag_name || (dst->nregions && dst->region_name))
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "names copied onto a mesh with names");
+    if (src->tag_name && src->ntags == dst->ntags)
+        dst->tag_name = copy_names(src->tag_name, src->ntags, &ok);
+    if (src->region_name && src->nregions == dst->nregions)
+        dst->region_name = copy_names(src->region_name, src->nregions, &ok2);
+    if (ok && ok2) return SQ_OK;
+    return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+}
+
 sq_status sq_quad_basis_init(sq_quad_basis *b, int order, sq_node_kind nodes, sq_error *err)
 {
     if (order < 1 || order > 10)

@@ -82,6 +82,10 @@ int sq_quad_mesh_tag_group(const sq_quad_mesh *m, int t);
 const char *sq_quad_mesh_region_name(const sq_quad_mesh *m, int r, char *buf, size_t n);
 const char *sq_quad_mesh_tag_name(const sq_quad_mesh *m, int t, char *buf, size_t n);
 
+/* src's curve and face names given to dst (a mesh made from it with the
+ * same tags and regions: a family's refined mesh); dst has none yet. */
+sq_status sq_quad_mesh_copy_names(sq_quad_mesh *dst, const sq_quad_mesh *src, sq_error *err);
+
 /* Give m nregions regions (region[] and region_face[] allocated, zeroed). */
 sq_status sq_quad_mesh_set_regions(sq_quad_mesh *m, int nregions, sq_error *err);
 
