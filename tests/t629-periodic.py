@@ -43,9 +43,8 @@ $SEMQUAD_REAL_GEOMETRIES, NekMesh's real T106 file too (pitch 0.798).  Each mesh
     total per curve and the image's vertices slid onto the master's
     images, on the layout road with exactly Gauss-Bonnet's 4;
   - a mesh with more irregular vertices than Gauss-Bonnet's count (the
-    cascade, on the split road) names in road_reason the pair route 1b
-    could not give one total ("periodic edges 3 and 5: 12 and 6
-    segments", docs/domains.md);
+    cascade, on the split road) says in road_reason why route 1b and
+    route 1 failed (docs/domains.md);
   - Nektar++ XML: one composite per periodic side, both with as many edges;
   - `--periodic 0:1` on the cascade (lengths 1.67 and 0.4) exits 9 with
     one line on stderr and writes nothing.
@@ -130,11 +129,13 @@ def check(name, step, expect, tmp):
         fails.append("%s: road %s, %d irregular (Gauss-Bonnet: %d)" % (
             name, report["road"], per["irregular_interior_vertices"],
             abs(per["gauss_bonnet_index"])))
-    # above Gauss-Bonnet's count the report names the pair the face's own
-    # layout could not even (issue 14; docs/domains.md, route 1b)
+    # above Gauss-Bonnet's count the report says why the face's own layout
+    # (route 1b) did not mesh it and why the identified domain's did not
+    # (issue 14; docs/domains.md, route 1b)
     if per["irregular_interior_vertices"] > abs(per["gauss_bonnet_index"]) and not re.search(
-            r"periodic edges \d+ and \d+: \d+ and \d+ segments", report.get("road_reason", "")):
-        fails.append("%s: %d irregular vertices over Gauss-Bonnet's %d, no pair named: %s" % (
+            r"\(route 1b\): .+; the identified domain's layout \(route 1\): .+",
+            report.get("road_reason", "")):
+        fails.append("%s: %d irregular vertices over Gauss-Bonnet's %d, no reason: %s" % (
             name, per["irregular_interior_vertices"], abs(per["gauss_bonnet_index"]),
             report.get("road_reason", "")))
     if expect.get("route_1b") and "periodic route 1b" not in report.get("road_reason", ""):

@@ -24,6 +24,14 @@
  *    line traced from its other end, the merged line ends there arriving
  *    in the opposite direction; and some do (the passage's lines cross
  *    the pitch lines).
+ *  - bends (sq_periodic_bends): the outlet kinks, two classes of two
+ *    vertices whose angles sum to 360 deg (the pitch lines' other kinks
+ *    round to 2 quads already), each turning by pi - its angle over at
+ *    most half of each edge and at most the distance to its partner (a
+ *    pitch: the partner is boundary off its edges); the face's own field
+ *    with them gives each bent kink 2 quads by eq. (15) with the ramp's
+ *    corrections (without them, 3 at the reflex and 1 at the convex
+ *    kinks), and Poincare-Hopf still holds.
  * usage: t637-periodic-field CASCADE_STEP */
 #include "degenerate_split.h"
 #include "field_analysis.h"
@@ -139,6 +147,50 @@ static int reentries(const cad_face *f, const sq_periodic *per, const sq_field_a
     return fails;
 }
 
+/* The bends of the cascade's outlet kinks (header). */
+static int bends(const cad_face *f, const sq_face_info *info, const sq_periodic *per)
+{
+    sq_error err;
+    sq_bend *b = NULL;
+    int nb = 0, fails = 0;
+    SQ_TEST_OK(sq_periodic_bends(f, info, per, &b, &nb, &err), err);
+    fails += sq_check_int("bends", "count", nb, 4);
+    sq_field_options fo;
+    sq_field_options_default(&fo);
+    fo.order = fo.tri.order = 4;
+    sq_field_analysis own, bent;
+    SQ_TEST_OK(sq_field_analyse(f, &fo, &own, &err), err);
+    fo.bends = b, fo.nbends = nb;
+    SQ_TEST_OK(sq_field_analyse(f, &fo, &bent, &err), err);
+    for (int k = 0; k < nb; k++) {
+        const sq_vertex *v = &info->vertices[b[k].vertex];
+        double partner = HUGE_VAL;
+        for (int j = 0; j < nb; j++) {
+            const sq_vertex *w = &info->vertices[b[j].vertex];
+            if (j != k && fabs(v->angle_deg + w->angle_deg - 360.0) < 1e-3)
+                partner = fmin(partner, hypot(v->x - w->x, v->y - w->y));
+        }
+        const int reflex = v->angle_deg > 180.0;
+        printf("bend at vertex %d (%.2f deg): stretch %.4g, %.4g; partner %.4g; quads %d "
+               "(face's own field %d)\n", b[k].vertex, v->angle_deg, b[k].len_in, b[k].len_out,
+               partner, bent.corners[b[k].vertex].valence, own.corners[b[k].vertex].valence);
+        fails += sq_check_abs("bend", "turn", b[k].turn, (180.0 - v->angle_deg) * M_PI / 180.0, 1e-12);
+        if (!(b[k].len_in > 0.0 && b[k].len_in <= 0.5 * cad_face_edge_length(f, v->edge_in) &&
+              b[k].len_out > 0.0 && b[k].len_out <= 0.5 * cad_face_edge_length(f, v->edge_out) &&
+              b[k].len_in <= partner && b[k].len_out <= partner)) {
+            printf("bend at vertex %d: stretch outside (0, min(half edge, partner)]\n", b[k].vertex);
+            fails++;
+        }
+        fails += sq_check_int("bend", "quads", bent.corners[b[k].vertex].valence, 2);
+        fails += sq_check_int("own field", "quads", own.corners[b[k].vertex].valence, reflex ? 3 : 1);
+    }
+    fails += sq_check_int("bent field", "Poincare-Hopf", bent.ph_lhs, bent.ph_rhs);
+    sq_field_analysis_free(&own);
+    sq_field_analysis_free(&bent);
+    free(b);
+    return fails;
+}
+
 int main(int argc, char **argv)
 {
     if (argc < 2) {
@@ -180,6 +232,7 @@ int main(int argc, char **argv)
             fails++;
         }
     }
+    fails += bends(f, &info, &per);
     int n = 0;
     fails += reentries(f, &per, &id, &n);
     printf("cascade: %d separatrices re-entered through the partner edge\n", n);

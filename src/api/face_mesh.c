@@ -242,7 +242,8 @@ static sq_status split_road(sq_mesh *h, const sq_mesher_options *mo, const sq_op
 /* Route 1b of periodic pairs (docs/domains.md): the face's own layout,
  * no edge identified, each pair's curves given one chord total and the
  * image's vertices set to the images of the master's (sq_mesher_options
- * .slid), for translations and rotations alike. */
+ * .slid), for translations and rotations alike; the kinks that are one
+ * regular point of the identified domain bends (sq_periodic_bends). */
 static sq_status slid_layout_road(sq_mesh *h, const sq_layout_options *lo,
                                   const sq_mesher_options *mo, const sq_options *o, sq_error *err)
 {
@@ -253,8 +254,16 @@ static sq_status slid_layout_road(sq_mesh *h, const sq_layout_options *lo,
         pairs[k].a = per->pairs[k].a, pairs[k].b = per->pairs[k].b;
         memcpy(pairs[k].affine, per->pairs[k].affine, sizeof pairs[k].affine);
     }
+    sq_bend *bends = NULL;
+    int nbends = 0;
+    sq_status st = sq_periodic_bends(h->face.cad, &h->info, per, &bends, &nbends, err);
+    if (st != SQ_OK) {
+        free(pairs);
+        return st;
+    }
     sq_layout_options own = *lo;
     own.field.periodic = own.trace.periodic = (sq_identification){0, NULL};
+    own.field.bends = bends, own.field.nbends = nbends;
     sq_mesher_options so = *mo;
     so.periodic = (sq_identification){0, NULL};
     so.slid = (sq_identification){per->npairs, pairs};
@@ -262,8 +271,8 @@ static sq_status slid_layout_road(sq_mesh *h, const sq_layout_options *lo,
     sq_quad_mesh_free(&h->q);
     h->all_quad = 0;
     h->road.reason[0] = '\0';
-    sq_status st = layout_road(h, &own, &so, o, err);
-    free(pairs);
+    st = layout_road(h, &own, &so, o, err);
+    free(pairs), free(bends);
     return st;
 }
 

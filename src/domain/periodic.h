@@ -33,6 +33,7 @@
 
 #include "domain.h"
 #include "face_info.h"
+#include "guiding_field.h"
 #include "identified_edges.h"
 #include "quad_mesh.h"
 
@@ -44,6 +45,12 @@
 
 /* tolerance of design 1, relative to the face's bounding-box diagonal */
 #define SQ_PERIODIC_REL_TOL 1e-6
+
+/* Two kinks of a class are one regular point when their angles sum to 360
+ * deg within this (degrees): pairs matching within SQ_PERIODIC_REL_TOL
+ * have tangents that agree to about that over an edge's length, far
+ * below it */
+#define SQ_PERIODIC_BEND_TOL_DEG 1e-3
 
 typedef struct {
     int a, b;          /* edges: b's points are T(a's), senses opposite */
@@ -124,6 +131,21 @@ sq_status sq_periodic_link(const sq_periodic *p, sq_quad_mesh *m, double size, d
  * adds regular vertices only). */
 sq_status sq_periodic_relink(const sq_quad_mesh *from, sq_quad_mesh *dst, double size,
                              double rel_tol, sq_error *err);
+
+/* Kinks whose angles sum to SQ_PERIODIC_BEND_TOL_DEG of 360 deg: the two
+ * vertices of a class of the identified domain (a pair joins a's ends with
+ * b's) whose edges are all periodic, one regular point of that domain,
+ * taking 4 quads.  The face's field splits them 3 + 1 where an angle is
+ * over 45 deg from straight (it rounds angle / 90 deg; the cascades'
+ * outlet kinks, 245 and 115 deg), which puts a separatrix where the
+ * identified domain has none; split 2 + 2 each is a bend of a patch side.
+ * *bends (allocated here, *nbends of them) are those vertices, for the
+ * guiding field to turn through (guiding_field.h), over a stretch of each
+ * edge as long as the kink's local feature size (its distance to the rest
+ * of the boundary; why, periodic_mesh.c bend_of) and at most half the edge
+ * (its other end may bend). */
+sq_status sq_periodic_bends(const cad_face *face, const sq_face_info *info, const sq_periodic *p,
+                            sq_bend **bends, int *nbends, sq_error *err);
 
 /* Design 3: chi of the identified domain; *index: the net sum of
  * (4 - valence) over its interior vertices that Gauss–Bonnet requires when

@@ -144,9 +144,30 @@ static int pair_of(const sq_periodic *p, int e)
     return -1;
 }
 
-/* Design 3, the domain: its vertices are classes of the face's vertices
- * (a pair joins a's start with b's end and a's end with b's start), its
- * edges the face's less one per pair, its inside the face's: chi = the
+/* up[v]: the class of face vertex v in the identified domain, its
+ * representative (a pair joins a's start with b's end and a's end with b's
+ * start); open[c]: class c has an edge of no pair (a boundary point). */
+static void vertex_classes(const sq_face_info *info, const sq_periodic *p, int *up, int *open)
+{
+    int nv = info->nvertices;
+    for (int v = 0; v < nv; v++) up[v] = v, open[v] = 0;
+    for (int k = 0; k < p->npairs; k++)
+        for (int v = 0; v < nv; v++)
+            for (int w = 0; w < nv; w++) {
+                const sq_vertex *x = &info->vertices[v], *y = &info->vertices[w];
+                if ((x->edge_out == p->pairs[k].a && y->edge_in == p->pairs[k].b) ||
+                    (x->edge_in == p->pairs[k].a && y->edge_out == p->pairs[k].b))
+                    up[find(up, v)] = find(up, w);
+            }
+    for (int v = 0; v < nv; v++) up[v] = find(up, v);
+    for (int v = 0; v < nv; v++) {
+        const sq_vertex *x = &info->vertices[v];
+        open[up[v]] |= pair_of(p, x->edge_in) < 0 || pair_of(p, x->edge_out) < 0;
+    }
+}
+
+/* Design 3, the domain: its vertices are classes of the face's vertices,
+ * its edges the face's less one per pair, its inside the face's: chi = the
  * face's chi - (vertices - classes) + pairs (a passage glued: -1; a square
  * glued both ways: a torus, 0; a sector with its centre: a cone, 1).  A
  * class whose every edge is periodic is interior (index 4 - round(sum of
@@ -161,26 +182,79 @@ static sq_status identified_index(const sq_face_info *info, const sq_periodic *p
         free(up), free(angle), free(open);
         return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     }
-    for (int v = 0; v < nv; v++) up[v] = v;
-    for (int k = 0; k < p->npairs; k++)
-        for (int v = 0; v < nv; v++)
-            for (int w = 0; w < nv; w++) {
-                const sq_vertex *x = &info->vertices[v], *y = &info->vertices[w];
-                if ((x->edge_out == p->pairs[k].a && y->edge_in == p->pairs[k].b) ||
-                    (x->edge_in == p->pairs[k].a && y->edge_out == p->pairs[k].b))
-                    up[find(up, v)] = find(up, w);
-            }
-    for (int v = 0; v < nv; v++) {
-        const sq_vertex *x = &info->vertices[v];
-        angle[find(up, v)] += x->angle_deg;
-        open[find(up, v)] |= pair_of(p, x->edge_in) < 0 || pair_of(p, x->edge_out) < 0;
-    }
+    vertex_classes(info, p, up, open);
+    for (int v = 0; v < nv; v++) angle[up[v]] += info->vertices[v].angle_deg;
     int sum = 0, classes = 0;
     for (int v = 0; v < nv; v++)
-        if (find(up, v) == v) classes++, sum += (open[v] ? 2 : 4) - (int)lround(angle[v] / 90.0);
+        if (up[v] == v) classes++, sum += (open[v] ? 2 : 4) - (int)lround(angle[v] / 90.0);
     *chi = info->chi - (nv - classes) + p->npairs;
     *index = 4 * *chi - sum;
     free(up), free(angle), free(open);
+    return SQ_OK;
+}
+
+/* The bend of kink v whose partner (the other vertex of its class) is w. */
+/* The kink's local feature size: its distance to the nearest point of
+ * the face's boundary off its own two edges (projection onto each other
+ * CAD edge; one that fails to project counts as far). */
+static double kink_reach(const cad_face *face, const sq_vertex *x)
+{
+    const double p[2] = {x->x, x->y};
+    double reach = HUGE_VAL;
+    for (int k = 0; k < cad_face_num_edges(face); k++) {
+        sq_error ignored = {0};
+        double d;
+        if (k != x->edge_in && k != x->edge_out &&
+            cad_face_edge_project(face, k, p, NULL, NULL, &d, &ignored) == SQ_OK)
+            reach = fmin(reach, d);
+    }
+    return reach;
+}
+
+/* The bend of kink v: the data turns over its local feature size on each
+ * edge, at most half the edge (its other end may bend too).  Why that
+ * length: the field's data along the two edges is the kink's own only as
+ * far as no other boundary is nearer; a ramp reaching further turns the
+ * data where another wall's data governs the field (a wake running beside
+ * the pitch line then ends on it), and a much shorter one is seen from
+ * that distance as a jump, which the field takes the short way (a 3/5 pair
+ * of zeros about a ramp's length from the kink, guiding_field.h).  Neither
+ * reflex nor convex kinks need a factor of their own: a reflex kink (the
+ * inner corner of a bend) has the wall across the bend near, so its turn
+ * is concentrated by that rule, a convex one (the outer corner) sees the
+ * wall across further off, so its turn spreads. */
+static sq_bend bend_of(const cad_face *face, const sq_face_info *info, int v)
+{
+    const sq_vertex *x = &info->vertices[v];
+    const double reach = kink_reach(face, x);
+    return (sq_bend){v, x->edge_in, x->edge_out, (180.0 - x->angle_deg) * M_PI / 180.0,
+                     fmin(reach, 0.5 * cad_face_edge_length(face, x->edge_in)),
+                     fmin(reach, 0.5 * cad_face_edge_length(face, x->edge_out))};
+}
+
+sq_status sq_periodic_bends(const cad_face *face, const sq_face_info *info, const sq_periodic *p,
+                            sq_bend **bends, int *nbends, sq_error *err)
+{
+    int nv = info->nvertices, *up = malloc(sizeof(int) * ((size_t)nv + 1));
+    int *open = malloc(sizeof(int) * ((size_t)nv + 1));
+    *nbends = 0;
+    *bends = malloc(sizeof **bends * ((size_t)nv + 1));
+    if (!up || !open || !*bends) {
+        free(up), free(open), free(*bends), *bends = NULL;
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    vertex_classes(info, p, up, open);
+    for (int v = 0; v < nv; v++)
+        for (int w = 0; w < nv; w++) {
+            if (w == v || up[w] != up[v] || open[up[v]]) continue;
+            int members = 0;
+            for (int u = 0; u < nv; u++) members += up[u] == up[v];
+            const double a = info->vertices[v].angle_deg, b = info->vertices[w].angle_deg;
+            if (members == 2 && fabs(a + b - 360.0) < SQ_PERIODIC_BEND_TOL_DEG &&
+                (lround(a / 90.0) != 2 || lround(b / 90.0) != 2))
+                (*bends)[(*nbends)++] = bend_of(face, info, v);
+        }
+    free(up), free(open);
     return SQ_OK;
 }
 

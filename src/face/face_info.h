@@ -26,6 +26,9 @@ typedef struct {
     int loop;
     int edge_in, edge_out; /* edge ending here, edge starting here */
     int smooth;            /* 1: smooth junction (|180 - angle| < tol) */
+    int bent;              /* 1: a bend (guiding_field.h sq_bend): 2 quads, no
+                              separatrix, no patch corner, at any angle; set by
+                              the field analysis, 0 from sq_face_info_compute */
     double cusp_tol_deg;   /* interior angles below this are cusps here */
 } sq_vertex;
 

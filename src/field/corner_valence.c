@@ -48,9 +48,13 @@ static sq_status one_corner(const sq_guiding_field *g, const cad_face *face, con
     }
     SQ_TRY(sq_guiding_field_data(g, face, v->edge_in, B, cur, err));
     total += turn(prev, cur);
-    /* Marcon 2019, eq. (15): ψ = atan2(v,u)/4, I in units of π/2 */
+    /* Marcon 2019, eq. (15): ψ = atan2(v,u)/4, I in units of π/2; where
+     * the data turns through a bend, the crosses at A and B are the
+     * tangents' turned by the bend's corrections, which I counts too */
     double alpha = v->angle_deg * M_PI / 180.0;
-    cv->raw = (alpha - 0.25 * total) / (0.5 * M_PI);
+    double bend = sq_guiding_field_bend(g, face, v->edge_in, Lin - rho) -
+                  sq_guiding_field_bend(g, face, v->edge_out, rho);
+    cv->raw = (alpha - 0.25 * total + bend) / (0.5 * M_PI);
     cv->valence = (int)lround(cv->raw);
     cv->angle_deg = v->angle_deg;
     return SQ_OK;

@@ -172,6 +172,8 @@ sq_status sq_field_analyse(const cad_face *face, const sq_field_options *opt,
     memset(out, 0, sizeof *out);
     double t0 = sq_now();
     sq_status st = sq_face_info_compute(face, &out->info, err);
+    for (int k = 0; k < opt->nbends && st == SQ_OK; k++)
+        out->info.vertices[opt->bends[k].vertex].bent = 1;
     sq_tri_options tri = opt->tri;
     tri.size = sq_tri_size(&tri, out->info.area);
     double *graded = malloc(sizeof(double) * 2 * (size_t)(out->info.nvertices + 1));
@@ -191,8 +193,8 @@ sq_status sq_field_analyse(const cad_face *face, const sq_field_options *opt,
     free(graded);
     double t1 = sq_now();
     if (st == SQ_OK)
-        st = sq_guiding_field_solve(face, &out->info, out->tri.mesh, glued, opt->order,
-                                    opt->method, &out->field, err);
+        st = sq_guiding_field_solve(face, &out->info, out->tri.mesh, glued, opt->bends,
+                                    opt->nbends, opt->order, opt->method, &out->field, err);
     sem_tri_mesh_free(&glued);
     double t2 = sq_now();
     if (st == SQ_OK)

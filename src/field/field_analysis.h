@@ -18,6 +18,10 @@ typedef struct {
     sq_identification periodic; /* pairs of identified edges (none: npairs 0):
                                    the field solved on the identified domain
                                    (identified_edges.h) */
+    const sq_bend *bends; /* nbends face vertices the data turns through
+                             (guiding_field.h; may be NULL): they take 2
+                             quads, sq_vertex.bent */
+    int nbends;
 } sq_field_options;
 
 /* Corners turning by less than this (degrees) are near-straight: the

@@ -15,16 +15,50 @@ sem_method sq_guiding_method_auto(const sq_face_info *info)
     return SEM_CG;
 }
 
-/* Marcon 2019, eq. (3): (cos 4θ_b, sin 4θ_b), θ_b the tangent angle. */
-static sq_status boundary_value(const cad_face *face, int edge, const double x[2], double uv[2],
-                                sq_error *err)
+/* The correction of the data's angle at arc length s of edge (sq_bend). */
+static double bend_turn(const sq_bend *b, int n, const cad_face *face, int edge, double s)
+{
+    double c = 0.0;
+    for (int k = 0; k < n; k++) {
+        const double span = b[k].len_in + b[k].len_out;
+        if (edge == b[k].edge_in) {
+            const double d = cad_face_edge_length(face, edge) - s; /* to the vertex */
+            if (d < b[k].len_in) c += b[k].turn * (b[k].len_in - d) / span;
+        }
+        if (edge == b[k].edge_out && s < b[k].len_out)
+            c -= b[k].turn * (b[k].len_out - s) / span;
+    }
+    return c;
+}
+
+static int bends_edge(const sq_bend *b, int n, int edge)
+{
+    for (int k = 0; k < n; k++)
+        if (edge == b[k].edge_in || edge == b[k].edge_out) return 1;
+    return 0;
+}
+
+/* Marcon 2019, eq. (3): (cos 4θ_b, sin 4θ_b), θ_b the tangent angle,
+ * turned through the bends of the edge. */
+static sq_status boundary_value(const cad_face *face, const sq_bend *bends, int nbends, int edge,
+                                const double x[2], double uv[2], sq_error *err)
 {
     double t[2];
     SQ_TRY(cad_face_edge_tangent_near(face, edge, x, t, err));
     double theta = atan2(t[1], t[0]);
+    if (bends_edge(bends, nbends, edge)) {
+        double s;
+        SQ_TRY(cad_face_edge_project(face, edge, x, &s, NULL, NULL, err));
+        theta += bend_turn(bends, nbends, face, edge, s);
+    }
     uv[0] = cos(4.0 * theta);
     uv[1] = sin(4.0 * theta);
     return SQ_OK;
+}
+
+double sq_guiding_field_bend(const sq_guiding_field *g, const cad_face *face, int edge, double s)
+{
+    return bend_turn(g->bends, g->nbends, face, edge, s);
 }
 
 /* w = u + iv turned by twist x (1 − Re(w e^{−iφ}))/2: the family of
@@ -41,7 +75,7 @@ static void twist_data(double uv[2], double twist, double phase)
 sq_status sq_guiding_field_data(const sq_guiding_field *g, const cad_face *face, int edge,
                                 const double x[2], double uv[2], sq_error *err)
 {
-    SQ_TRY(boundary_value(face, edge, x, uv, err));
+    SQ_TRY(boundary_value(face, g->bends, g->nbends, edge, x, uv, err));
     if (g->twist != 0.0) twist_data(uv, g->twist, g->twist_phase);
     return SQ_OK;
 }
@@ -52,6 +86,8 @@ sq_status sq_guiding_field_data(const sq_guiding_field *g, const cad_face *face,
  * does not match is projected again. */
 typedef struct {
     const cad_face *face;
+    const sq_bend *bends;
+    int nbends;
     int comp;
     long k, n, cap;      /* position in this pass; points kept by the first */
     double *memo;        /* 4 n: x, y, u, v (untwisted) */
@@ -70,7 +106,7 @@ static double boundary_data(const double x[2], const double n[2], int tag, void 
         uv[0] = c->memo[4 * k + 2];
         uv[1] = c->memo[4 * k + 3];
     } else {
-        if (c->status == SQ_OK) c->status = boundary_value(c->face, tag, x, uv, c->err);
+        if (c->status == SQ_OK) c->status = boundary_value(c->face, c->bends, c->nbends, tag, x, uv, c->err);
         if (k == c->n && c->status == SQ_OK) {
             if (c->n == c->cap) {
                 const long cap = c->cap ? 2 * c->cap : 256;
@@ -126,12 +162,14 @@ void sq_guiding_field_free(sq_guiding_field *g)
     if (!g) return;
     sem_field_evaluator_free(&g->ev);
     sem_field_free(&g->uv);
+    free(g->bends);
     memset(g, 0, sizeof *g);
 }
 
 sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
-                                 const sem_tri_mesh *mesh, const sem_tri_mesh *glued, int order,
-                                 sq_method method, sq_guiding_field *out, sq_error *err)
+                                 const sem_tri_mesh *mesh, const sem_tri_mesh *glued,
+                                 const sq_bend *bends, int nbends, int order, sq_method method,
+                                 sq_guiding_field *out, sq_error *err)
 {
     const sem_tri_mesh *sm = glued ? glued : mesh; /* the elements are mesh's either way */
     memset(out, 0, sizeof *out);
@@ -141,7 +179,12 @@ sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
     SQ_TRY(sem_poisson_create(sm, order, m, NULL, NULL, &solver, err));
     sq_status st = sem_field_create(mesh, order, 2, &out->uv, err);
     /* u and v share the matrix: one factorization, two right-hand sides */
-    bdata_ctx ctx = {.face = face, .status = SQ_OK, .err = err};
+    bdata_ctx ctx = {.face = face, .bends = bends, .nbends = nbends, .status = SQ_OK, .err = err};
+    if (st == SQ_OK && nbends > 0) {
+        out->bends = malloc(sizeof *out->bends * (size_t)nbends);
+        if (!out->bends) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+        else memcpy(out->bends, bends, sizeof *out->bends * (size_t)nbends), out->nbends = nbends;
+    }
     for (int c = 0; c < 2 && st == SQ_OK; c++)
         st = sem_field_create(sm, order, 1, &comp[c], err);
     /* a degenerate field is solved again with the twisted data */

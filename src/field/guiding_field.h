@@ -36,6 +36,22 @@
 
 typedef enum { SQ_METHOD_AUTO = -1, SQ_METHOD_CG = SEM_CG, SQ_METHOD_DG = SEM_DG } sq_method;
 
+/* A bend: a face vertex the data turns through along its two edges, with
+ * the tangent's own turn, instead of jumping at it (a kink of a periodic
+ * pair that is one regular point of the identified domain,
+ * docs/domains.md).  Marcon's data jumps at a corner, and the field takes
+ * the shorter way round (the chord between the two values of w), so a 245
+ * deg kink gets 3 quads; turning with the bend, the long way, it gets 2.
+ * The data's angle is θ_b plus a correction rising linearly in arc length
+ * over len_in of edge_in and len_out of edge_out, continuous at the vertex
+ * (θ_in + turn len_in / (len_in + len_out) from both sides). */
+typedef struct {
+    int vertex;            /* sq_face_info.vertices */
+    int edge_in, edge_out; /* its edges (sq_vertex) */
+    double turn;           /* the tangent's turn there, π − the interior angle (radians) */
+    double len_in, len_out;
+} sq_bend;
+
 typedef struct {
     const sem_tri_mesh *mesh; /* borrowed */
     sem_method method;        /* what was used */
@@ -45,6 +61,8 @@ typedef struct {
     sem_field_evaluator *ev;  /* on uv */
     double twist;             /* != 0: degenerate data, solved twisted (above); radians of w */
     double twist_phase;       /* φ */
+    int nbends;
+    sq_bend *bends;           /* owned copy: the data turns through them */
 } sq_guiding_field;
 
 /* The method --method auto picks: CG when every corner angle is a multiple
@@ -53,16 +71,21 @@ sem_method sq_guiding_method_auto(const sq_face_info *info);
 
 /* The boundary data g was solved with at a point of CAD edge `edge`:
  * (cos 4θ_b, sin 4θ_b) from the edge's exact tangent at the point nearest
- * to x, twisted as g was. */
+ * to x, turned through g's bends, twisted as g was. */
 sq_status sq_guiding_field_data(const sq_guiding_field *g, const cad_face *face, int edge,
                                 const double x[2], double uv[2], sq_error *err);
 
+/* The bends' correction of the data's angle at arc length s of edge
+ * (radians of θ, 0 away from g's bends). */
+double sq_guiding_field_bend(const sq_guiding_field *g, const cad_face *face, int edge, double s);
+
 /* glued: NULL, or mesh glued along identified edges (sem_tri_mesh_glue):
  * the field is solved on it, the pairs' unknowns one (identified_edges.h),
- * and lives on mesh as ever. */
+ * and lives on mesh as ever.  bends: nbends of them (may be 0, NULL). */
 sq_status sq_guiding_field_solve(const cad_face *face, const sq_face_info *info,
-                                 const sem_tri_mesh *mesh, const sem_tri_mesh *glued, int order,
-                                 sq_method method, sq_guiding_field *out, sq_error *err);
+                                 const sem_tri_mesh *mesh, const sem_tri_mesh *glued,
+                                 const sq_bend *bends, int nbends, int order, sq_method method,
+                                 sq_guiding_field *out, sq_error *err);
 void sq_guiding_field_free(sq_guiding_field *g); /* frees, zeroes the struct */
 
 /* The L2 norms of u and v over the face (reports; not needed to mesh). */

@@ -91,6 +91,8 @@ typedef struct {
                     point, n at a face vertex, 2 at a foot, 4 at a crossing,
                     0 at an open end */
     int degree;  /* edge ends at the node */
+    int bend;    /* SQ_LNODE_CORNER: sq_vertex.bent, a bend of a patch side at
+                    any angle when it takes 2 quads */
 } sq_layout_node;
 
 typedef struct {

@@ -115,11 +115,11 @@ static sq_status end_node(gstate *g, const sq_sep_end *e, const double *p, int s
             }
         double xy[2];
         SQ_TRY(cad_face_edge_eval(g->face, e->id, e->s, xy, NULL, NULL, err));
-        sq_layout_node n = {xy[0], xy[1], SQ_LNODE_FOOT, e->id, e->s, 2, 0};
+        sq_layout_node n = {xy[0], xy[1], SQ_LNODE_FOOT, e->id, e->s, 2, 0, 0};
         return node_add(g, n, id, err);
     }
     default: {
-        sq_layout_node n = {p[0], p[1], SQ_LNODE_OPEN, sep, 0.0, 0, 0};
+        sq_layout_node n = {p[0], p[1], SQ_LNODE_OPEN, sep, 0.0, 0, 0, 0};
         return node_add(g, n, id, err);
     }
     }
@@ -249,7 +249,7 @@ sq_status lay_graph_build(sq_layout *L, const cad_face *face, const sq_face_info
     /* nodes: face vertices, then singular points */
     for (int k = 0; k < info->nvertices && st == SQ_OK; k++) {
         const sq_vertex *v = &info->vertices[k];
-        sq_layout_node n = {v->x, v->y, SQ_LNODE_CORNER, k, 0.0, L->vertex_quads[k], 0};
+        sq_layout_node n = {v->x, v->y, SQ_LNODE_CORNER, k, 0.0, L->vertex_quads[k], 0, v->bent};
         int id;
         st = node_add(&g, n, &id, err);
         g.vstart[v->edge_out] = k;
@@ -257,7 +257,7 @@ sq_status lay_graph_build(sq_layout *L, const cad_face *face, const sq_face_info
     }
     for (int k = 0; k < L->nsing && st == SQ_OK; k++) {
         sq_layout_node n = {L->sing[k].x, L->sing[k].y, SQ_LNODE_SINGULAR, k, 0.0,
-                            L->sing[k].valence, 0};
+                            L->sing[k].valence, 0, 0};
         int id;
         st = node_add(&g, n, &id, err);
     }
@@ -308,7 +308,7 @@ sq_status lay_graph_build(sq_layout *L, const cad_face *face, const sq_face_info
                     hypot(L->nodes[v].x - h->x, L->nodes[v].y - h->y) <= g.tol)
                     id = v;
             if (id < 0) {
-                sq_layout_node n = {h->x, h->y, SQ_LNODE_CROSSING, -1, 0.0, 4, 0};
+                sq_layout_node n = {h->x, h->y, SQ_LNODE_CROSSING, -1, 0.0, 4, 0, 0};
                 st = node_add(&g, n, &id, err);
             }
             sp[nsp++] = (split){h->a, h->pa, id};

@@ -292,13 +292,14 @@ static int is_inserted(const sq_layout *L, int v)
 }
 
 /* Is node v a bend of a patch side: a face vertex taking 2 quads with no
- * separatrix at it, its angle within SQ_LAYOUT_BEND_TOL_DEG of π (trace.c
- * starts none there; layout_check.c wants it a corner of no patch)? */
+ * separatrix at it, its angle within SQ_LAYOUT_BEND_TOL_DEG of π or a
+ * periodic bend (sq_layout_node.bend) (trace.c starts none there;
+ * layout_check.c wants it a corner of no patch)? */
 static int is_bend(const sq_layout *L, int v, double ang)
 {
     const sq_layout_node *n = &L->nodes[v];
     return n->kind == SQ_LNODE_CORNER && n->degree == 2 && L->vertex_quads[n->id] == 2 &&
-           fabs(ang - M_PI) < SQ_LAYOUT_BEND_TOL_DEG * M_PI / 180.0;
+           (n->bend || fabs(ang - M_PI) < SQ_LAYOUT_BEND_TOL_DEG * M_PI / 180.0);
 }
 
 /* Patch p from the cycles it owns: its half-edges (the outer cycle first),

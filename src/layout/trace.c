@@ -421,7 +421,7 @@ static void walk_set_free(walk_set *ws)
 }
 
 /* Does a face vertex taking `quads` quads start separatrices (quads - 1)?
- * Not a smooth junction, nor a vertex taking 2 quads whose angle is within
+ * Not a smooth junction or a bend (sq_vertex.bent), nor a vertex taking 2 quads whose angle is within
  * SQ_LAYOUT_BEND_TOL_DEG of 180 deg: the layout counts neither as a patch
  * corner (layout_patches.c, layout_check.c), and the separatrix that would
  * split a 135-180 deg angle in two leaves along one of its edges where the
@@ -489,7 +489,7 @@ static sq_status reenter(sq_tracer *tr, walk_set *ws, int i, sq_error *err)
 
 static int starts_separatrices(const sq_tracer *tr, const sq_vertex *v, int quads)
 {
-    if (v->smooth || quads < 2) return 0;
+    if (v->smooth || v->bent || quads < 2) return 0;
     double shortest = fmin(cad_face_edge_length(tr->face, v->edge_in),
                            cad_face_edge_length(tr->face, v->edge_out));
     return !(quads == 2 && fabs(v->angle_deg - 180.0) < SQ_LAYOUT_BEND_TOL_DEG &&

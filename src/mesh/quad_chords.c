@@ -160,9 +160,10 @@ void qm_periodic_partners(const sq_layout *L, const cad_face *face, const sq_mes
 }
 
 /* Opposite sides of every patch matched (and a piece and its partner one
- * count): each short side's coarsest edge raised until nothing changes. */
+ * count): each short side's coarsest edge raised until nothing changes,
+ * an edge marked in avoid (may be NULL) only where the whole side is. */
 static sq_status settle(const sq_layout *L, const double *len, double size, const double *need,
-                        const int *partner, int *n, sq_error *err)
+                        const int *partner, const char *avoid, int *n, sq_error *err)
 {
     for (int changed = 1; changed;) {
         changed = 0;
@@ -181,14 +182,15 @@ static sq_status settle(const sq_layout *L, const double *len, double size, cons
                 long want = need ? lround(need[2 * q + k] / size) : 0;
                 if (want > a && want > c) c = want;
                 if (a == c) continue;
-                int s = a < c ? k : k + 2, best = -1;
+                int s = a < c ? k : k + 2, best = -1, best_avoided = 1;
                 double ratio = -1.0;
                 for (int h = p->side_start[s]; h < p->side_start[s + 1]; h++) {
-                    int e = p->half[h].edge;
+                    int e = p->half[h].edge, avoided = avoid && avoid[e];
                     double r = len[e] / n[e];
-                    if (r > ratio) {
+                    if (avoided < best_avoided || (avoided == best_avoided && r > ratio)) {
                         ratio = r;
                         best = e;
+                        best_avoided = avoided;
                     }
                 }
                 n[best] += (int)labs(a - c);
@@ -221,45 +223,107 @@ static long slid_imbalance(const sq_layout *L, const sq_identification *id, cons
     return d;
 }
 
+/* avoid[e]: layout edge e lies on the longer curve of a pair of id whose
+ * totals differ in n. */
+static void longer_curves(const sq_layout *L, const sq_identification *id, const int *n,
+                          char *avoid)
+{
+    memset(avoid, 0, (size_t)L->nedges + 1);
+    for (int k = 0; k < id->npairs; k++) {
+        const long na = cad_edge_count(L, id->pairs[k].a, n), nb = cad_edge_count(L, id->pairs[k].b, n);
+        const int longer = na > nb ? id->pairs[k].a : id->pairs[k].b;
+        for (int e = 0; na != nb && e < L->nedges; e++) avoid[e] |= L->edges[e].cad_edge == longer;
+    }
+}
+
+/* Is layout edge e on the shorter curve of a pair of id whose totals
+ * differ in n? */
+static int on_shorter_curve(const sq_layout *L, const sq_identification *id, const int *n, int e)
+{
+    for (int k = 0; k < id->npairs; k++) {
+        const long na = cad_edge_count(L, id->pairs[k].a, n), nb = cad_edge_count(L, id->pairs[k].b, n);
+        if (na != nb && L->edges[e].cad_edge == (na < nb ? id->pairs[k].a : id->pairs[k].b))
+            return 1;
+    }
+    return 0;
+}
+
+typedef struct {
+    const sq_layout *L;
+    const double *len, *need;
+    double size;
+    const sq_identification *id;
+    char *avoid; /* L->nedges + 1 */
+} totals_ctx;
+
+/* out = from with layout edge e raised by one and settled, the raise kept
+ * off the longer curves of from's unbalanced pairs where a patch side
+ * allows (there it would undo itself: the sheet from the short curve
+ * ending on its partner). */
+static sq_status raise_one(const totals_ctx *c, const int *from, int e, int *out, sq_error *err)
+{
+    longer_curves(c->L, c->id, from, c->avoid);
+    memcpy(out, from, sizeof(int) * (size_t)c->L->nedges);
+    out[e]++;
+    return settle(c->L, c->len, c->size, c->need, NULL, c->avoid, out, err);
+}
+
+/* The best admissible move from n of one raise (depth 1) or two (depth 2,
+ * each on a shorter curve when it is made): the pairs' imbalance falls
+ * below d, fewest quads added, the lowest edges at a tie; *best = -1 when
+ * none.  Two raises are needed where the sheets of a patch side reach two
+ * pairs' curves: raising the short curve of one moves the imbalance to the
+ * other, whose short curve the second raise evens. */
+static sq_status best_move(const totals_ctx *c, const int *n, long d, int depth, int *t1, int *t2,
+                           int best[2], sq_error *err)
+{
+    const sq_layout *L = c->L;
+    double best_quads = HUGE_VAL, quads = qm_quantized_quads(L, n);
+    best[0] = best[1] = -1;
+    for (int e = 0; e < L->nedges; e++) {
+        if (!on_shorter_curve(L, c->id, n, e)) continue;
+        SQ_TRY(raise_one(c, n, e, t1, err));
+        for (int f = depth == 1 ? -1 : 0; f < (depth == 1 ? 0 : L->nedges); f++) {
+            if (f >= 0 && !on_shorter_curve(L, c->id, t1, f)) continue;
+            if (f >= 0) SQ_TRY(raise_one(c, t1, f, t2, err));
+            const int *t = f >= 0 ? t2 : t1;
+            const double added = qm_quantized_quads(L, t) - quads;
+            if (slid_imbalance(L, c->id, t) < d && added < best_quads)
+                best_quads = added, best[0] = e, best[1] = f;
+        }
+    }
+    return SQ_OK;
+}
+
 /* Route 1b (docs/domains.md, "one total per curve"): the two curves of
  * every pair of o->slid carry one total count.  The face's own layout has
  * no partner pieces, so only totals are matched: an integer problem,
  * solved greedily and deterministically.  While some pair differs, every
  * layout edge on the shorter curve of such a pair is tried raised by one
  * and the quantization settled again (the raise runs along its sheet to
- * wherever the sheet ends); a try is admissible when the pairs' total
- * imbalance falls (its sheet does not end on the longer curve as well),
- * and the one adding the fewest quads (the least change of size) is
- * kept, the lowest edge index at a tie.  None admissible: SQ_ERR_LAYOUT
- * (every sheet from the short curve ends on its partner too). */
+ * wherever the sheet ends, kept off the longer curves where a patch side
+ * allows); a try is admissible when the pairs' total imbalance falls, and
+ * the one adding the fewest quads (the least change of size) is kept, the
+ * lowest edge index at a tie.  Where no single raise is admissible, two in
+ * a row are tried (best_move).  None admissible: SQ_ERR_LAYOUT (every
+ * sheet from the short curve ends on its partner too). */
 static sq_status equal_totals(const sq_layout *L, const double *len, double size,
                               const double *need, const sq_identification *id, int *n,
                               sq_error *err)
 {
-    int *trial = malloc(sizeof(int) * ((size_t)L->nedges + 1));
-    if (!trial) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    sq_status st = SQ_OK;
+    const size_t ne = (size_t)L->nedges + 1;
+    int *t1 = malloc(sizeof(int) * ne), *t2 = malloc(sizeof(int) * ne);
+    char *avoid = malloc(ne);
+    totals_ctx c = {L, len, need, size, id, avoid};
+    sq_status st = t1 && t2 && avoid ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     for (long d = slid_imbalance(L, id, n); d > 0 && st == SQ_OK; d = slid_imbalance(L, id, n)) {
-        int best = -1, short_pair = -1;
-        double best_quads = HUGE_VAL, quads = qm_quantized_quads(L, n);
-        for (int k = 0; k < id->npairs && st == SQ_OK; k++) {
-            const int a = id->pairs[k].a, b = id->pairs[k].b;
-            const long na = cad_edge_count(L, a, n), nb = cad_edge_count(L, b, n);
-            if (na == nb) continue;
-            if (short_pair < 0) short_pair = k;
-            const int shorter = na < nb ? a : b;
-            for (int e = 0; e < L->nedges && st == SQ_OK; e++) {
-                if (L->edges[e].cad_edge != shorter) continue;
-                memcpy(trial, n, sizeof(int) * (size_t)L->nedges);
-                trial[e]++;
-                st = settle(L, len, size, need, NULL, trial, err);
-                double added = st == SQ_OK ? qm_quantized_quads(L, trial) - quads : 0.0;
-                if (st == SQ_OK && slid_imbalance(L, id, trial) < d && added < best_quads)
-                    best_quads = added, best = e;
-            }
-        }
-        if (st == SQ_OK && best < 0) {
-            const sq_identified_pair *p = &id->pairs[short_pair];
+        int best[2] = {-1, -1};
+        for (int depth = 1; depth <= 2 && best[0] < 0 && st == SQ_OK; depth++)
+            st = best_move(&c, n, d, depth, t1, t2, best, err);
+        if (st == SQ_OK && best[0] < 0) {
+            int k = 0;
+            while (cad_edge_count(L, id->pairs[k].a, n) == cad_edge_count(L, id->pairs[k].b, n)) k++;
+            const sq_identified_pair *p = &id->pairs[k];
             const long na = cad_edge_count(L, p->a, n), nb = cad_edge_count(L, p->b, n);
             st = SQ_FAIL(err, SQ_ERR_LAYOUT,
                          "periodic edges %d and %d: %ld and %ld segments, and every sheet of the "
@@ -267,12 +331,11 @@ static sq_status equal_totals(const sq_layout *L, const double *len, double size
                          "no raise evens them",
                          p->a, p->b, na, nb, na < nb ? p->a : p->b, na < nb ? p->b : p->a);
         }
-        if (st == SQ_OK) {
-            n[best]++;
-            st = settle(L, len, size, need, NULL, n, err);
-        }
+        if (st == SQ_OK) st = raise_one(&c, n, best[0], t1, err);
+        if (st == SQ_OK && best[1] >= 0) st = raise_one(&c, t1, best[1], n, err);
+        else if (st == SQ_OK) memcpy(n, t1, sizeof(int) * (size_t)L->nedges);
     }
-    free(trial);
+    free(t1), free(t2), free(avoid);
     return st;
 }
 
@@ -297,7 +360,7 @@ static sq_status min_totals(const sq_layout *L, const double *len, double size,
         }
         if (best < 0) return SQ_OK; /* every curve carries what it is asked */
         n[best]++;
-        SQ_TRY(settle(L, len, size, need, partner, n, err));
+        SQ_TRY(settle(L, len, size, need, partner, NULL, n, err));
     }
 }
 
@@ -311,7 +374,7 @@ sq_status qm_quantize(const sq_layout *L, const double *len, double size, const 
         for (int f = 0; whole && f < L->nedges; f++) whole = f == e || L->edges[f].cad_edge != c;
         if (whole && n[e] < o->min_chords[c]) n[e] = o->min_chords[c];
     }
-    SQ_TRY(settle(L, len, size, need, partner, n, err));
+    SQ_TRY(settle(L, len, size, need, partner, NULL, n, err));
     if (o->min_chords) SQ_TRY(min_totals(L, len, size, need, partner, o->min_chords, n, err));
     return o->slid.npairs ? equal_totals(L, len, size, need, &o->slid, n, err) : SQ_OK;
 }
