@@ -87,6 +87,16 @@ static void split_mesh_free(split_mesh *s)
     memset(s, 0, sizeof *s);
 }
 
+/* The edge of triangle n that is triangle e's edge k (it runs the other
+ * way), or -1. */
+static int edge_across(const sem_tri_mesh *m, int e, int k, int n)
+{
+    int a = m->tri[3 * e + k];
+    for (int kk = 0; kk < 3; kk++)
+        if (m->tri[3 * n + (kk + 1) % 3] == a) return kk;
+    return -1;
+}
+
 /* The midpoint vertex of every triangle edge but the pairs' diagonals
  * (diag[e]: that edge of e, or -1), once per edge (the lower triangle of
  * the two makes it): mid[3e+k]. */
@@ -99,9 +109,8 @@ static sq_status midpoints(const cad_face *face, const sq_triangulation *tri, co
             int n = m->neigh[3 * e + k];
             if (k == diag[e]) continue;
             if (n >= 0 && n < e) {
-                int a = m->tri[3 * e + k], kk = 0;
-                while (kk < 3 && m->tri[3 * n + (kk + 1) % 3] != a) kk++;
-                if (kk == 3)
+                int kk = edge_across(m, e, k, n);
+                if (kk < 0)
                     return SQ_FAIL(err, SQ_ERR_INTERNAL, "triangles %d and %d share no edge", e, n);
                 mid[3 * e + k] = mid[3 * n + kk];
                 continue;
@@ -119,16 +128,6 @@ static sq_status midpoints(const cad_face *face, const sq_triangulation *tri, co
     return SQ_OK;
 }
 
-/* The edge of triangle n that is triangle e's edge k (it runs the other
- * way), or -1. */
-static int edge_across(const sem_tri_mesh *m, int e, int k, int n)
-{
-    int a = m->tri[3 * e + k];
-    for (int kk = 0; kk < 3; kk++)
-        if (m->tri[3 * n + (kk + 1) % 3] == a) return kk;
-    return -1;
-}
-
 /* The quad of the two triangles across e's edge k, counter-clockwise
  * from that edge's first vertex: a, d (n's vertex off the edge), b, c
  * (e's), with the triangle edges under its sides in es[4] (as 3t+k). */
@@ -138,21 +137,6 @@ static void pair_quad(const sem_tri_mesh *m, int e, int k, int n, int kk, int c[
     c[2] = m->tri[3 * e + (k + 1) % 3], c[3] = m->tri[3 * e + (k + 2) % 3];
     es[0] = 3 * n + (kk + 1) % 3, es[1] = 3 * n + (kk + 2) % 3;
     es[2] = 3 * e + (k + 1) % 3, es[3] = 3 * e + (k + 2) % 3;
-}
-
-/* eta = 1 - max |corner angle - 90 deg| / 90 deg of the straight quad c
- * (Jezdimirovic 2021, Table 1); -1 if it is not strictly convex. */
-static double quad_eta(const double *xy, const int c[4])
-{
-    double worst = 0.0;
-    for (int i = 0; i < 4; i++) {
-        const double *p = &xy[2 * c[i]], *a = &xy[2 * c[(i + 1) % 4]], *b = &xy[2 * c[(i + 3) % 4]];
-        double u[2] = {a[0] - p[0], a[1] - p[1]}, v[2] = {b[0] - p[0], b[1] - p[1]};
-        double cr = u[0] * v[1] - u[1] * v[0];
-        if (!(cr > 0.0)) return -1.0;
-        worst = fmax(worst, fabs(atan2(cr, u[0] * v[0] + u[1] * v[1]) - M_PI_2));
-    }
-    return 1.0 - worst / M_PI_2;
 }
 
 typedef struct {
@@ -188,7 +172,9 @@ static sq_status pair_triangles(const sem_tri_mesh *m, int *diag, sq_error *err)
             int n = m->neigh[3 * e + k], kk = n > e ? edge_across(m, e, k, n) : -1, c[4], es[4];
             if (kk < 0) continue;
             pair_quad(m, e, k, n, kk, c, es);
-            double eta = quad_eta(m->vxy, c);
+            const double *xy[4] = {&m->vxy[2 * c[0]], &m->vxy[2 * c[1]], &m->vxy[2 * c[2]],
+                                   &m->vxy[2 * c[3]]};
+            double eta = sq_quad_corner_eta(xy); /* <= 0 where it is not convex */
             if (eta >= SQ_PAIR_MIN_ETA) cand[nc++] = (pair_cand){eta, e, k};
         }
     }
