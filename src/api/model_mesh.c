@@ -202,12 +202,12 @@ static int agree_chords(const sq_domain *dm, sq_quad_mesh *const *q, int *const 
 /* The faces' meshes merged as d says and the pairs linked; *merged NULL
  * and err where they do not meet. */
 static sq_status merge_linked(const sq_domain *d, const sq_api_faces *f, const int *faces,
-                              const sq_options *o, const sq_periodic *per, sq_quad_mesh **merged,
+                              double size, const sq_periodic *per, sq_quad_mesh **merged,
                               sq_error *err)
 {
-    sq_status st = sq_domain_merge(d, f->q, faces, o->size, merged, err);
+    sq_status st = sq_domain_merge(d, f->q, faces, size, merged, err);
     if (st == SQ_OK && per->npairs)
-        st = sq_periodic_link(per, *merged, o->size, SQ_PERIODIC_NODE_REL_TOL, err);
+        st = sq_periodic_link(per, *merged, size, SQ_PERIODIC_NODE_REL_TOL, err);
     if (st != SQ_OK) sq_quad_mesh_free(merged);
     return st;
 }
@@ -239,9 +239,9 @@ static sq_status try_layouts(const sq_model *m, const sq_domain *dm, const sq_do
     if (st == SQ_OK && changed)
         st = SQ_FAIL(err, SQ_ERR_LAYOUT, "the faces' chord counts on a shared curve differ after "
                      "%d rounds (a layout splits it at corners of its own)", r);
-    if (st == SQ_OK && merge_linked(d, f, faces, o, per, merged, err) != SQ_OK) {
+    if (st == SQ_OK && merge_linked(d, f, faces, o->size, per, merged, err) != SQ_OK) {
         st = slide_faces(m, dm, f, &ol, minc, road, err);
-        if (st == SQ_OK) st = merge_linked(d, f, faces, o, per, merged, err);
+        if (st == SQ_OK) st = merge_linked(d, f, faces, o->size, per, merged, err);
     }
     for (int k = 0; minc && k < f->n; k++) free(minc[k]);
     free(minc);
@@ -272,8 +272,7 @@ static sq_status split_domain(const sq_domain *dm, const sq_domain *d, sq_api_fa
     SQ_TRY(sq_domain_mesh_split(dm, mo, f->q, rounds, err));
     for (int k = 0; k < f->n; k++)
         if (sq_domain_face_shares(dm, k)) road[k] = "split";
-    SQ_TRY(sq_domain_merge(d, f->q, faces, size, q, err));
-    return per->npairs ? sq_periodic_link(per, *q, size, SQ_PERIODIC_NODE_REL_TOL, err) : SQ_OK;
+    return merge_linked(d, f, faces, size, per, q, err);
 }
 
 /* The layout road's merged mesh below the quality floor (a corner slid
