@@ -42,12 +42,10 @@ void sem_field_free(sem_field **f)
     *f = NULL;
 }
 
-void sem_field_eval_ref(const sem_field *f, int e, double r, double s, double *val, double *dr,
-                        double *ds)
+void sem_field_eval_modes(const sem_field *f, int e, const double *phi, const double *pr,
+                          const double *ps, double *val, double *dr, double *ds)
 {
-    double phi[FIELD_NMAX], pr[FIELD_NMAX], ps[FIELD_NMAX];
     const int nm = f->nmodes, nc = f->ncomp;
-    sem_tri_dubiner(f->P, r, s, phi, dr ? pr : NULL, ds ? ps : NULL);
     const double *c = f->coef + (size_t)e * nm * nc;
     for (int k = 0; k < nc; ++k) {
         double v = 0.0, a = 0.0, b = 0.0;
@@ -61,4 +59,12 @@ void sem_field_eval_ref(const sem_field *f, int e, double r, double s, double *v
         if (dr) dr[k] = a;
         if (ds) ds[k] = b;
     }
+}
+
+void sem_field_eval_ref(const sem_field *f, int e, double r, double s, double *val, double *dr,
+                        double *ds)
+{
+    double phi[FIELD_NMAX], pr[FIELD_NMAX], ps[FIELD_NMAX];
+    sem_tri_dubiner(f->P, r, s, phi, dr ? pr : NULL, ds ? ps : NULL);
+    sem_field_eval_modes(f, e, phi, pr, ps, val, dr, ds);
 }

@@ -31,5 +31,11 @@ void sem_field_free(sem_field **f); /* NULL-safe, NULLs *f */
  * allocation; P <= SEM_MAX_ORDER. */
 void sem_field_eval_ref(const sem_field *f, int e, double r, double s, double *val, double *dr,
                         double *ds);
+/* The same from the Dubiner modes at (r,s), phi (and pr, ps where dr,
+ * ds are asked for) as sem_tri_dubiner(f->P, r, s, ...) gives them: the
+ * same sums, so the same bits as sem_field_eval_ref, for points at which
+ * many elements are evaluated (the modes computed once). */
+void sem_field_eval_modes(const sem_field *f, int e, const double *phi, const double *pr,
+                          const double *ps, double *val, double *dr, double *ds);
 
 #endif

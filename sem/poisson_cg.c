@@ -605,11 +605,13 @@ sq_status sem_poisson_cg_create_like(void *src_state, const sem_tri_mesh *mesh,
     cg_state *c = NULL;
     sq_status st = cg_start(mesh, src->P, src, &c, err);
     if (st == SQ_OK) st = cg_dofs(c, kind, kind_ctx, err);
-    if (st == SQ_OK) {
-        cg_elements_take(c, src);
-        st = cg_assemble(c, err);
-    }
-    cg_free(src); /* what it had left: its numbering and factor */
+    if (st == SQ_OK) cg_elements_take(c, src);
+    /* what src had left, its numbering, matrix and factor, freed before the
+     * new ones are made: they reuse its memory instead of faulting in new
+     * pages (the θ field's analysis and factorization on the disc: 120 of
+     * 450 page faults fewer) */
+    cg_free(src);
+    if (st == SQ_OK) st = cg_assemble(c, err);
     if (st != SQ_OK) {
         cg_free(c);
         return st;

@@ -2,6 +2,7 @@
 
 #include "field.h"
 #include "locate.h"
+#include "tri_basis.h"
 
 #include <complex.h>
 #include <math.h>
@@ -76,15 +77,29 @@ sq_status sq_field_winding(const sq_guiding_field *g, const double c[2], double 
     return SQ_FAIL(err, SQ_ERR_INTERNAL, "cannot resolve the index around (%g, %g)", c[0], c[1]);
 }
 
-/* Lattice scan of element e: does it hold sign changes of both u and v?
- * best[2]: the lattice point (r, s) of least |(u, v)|. */
-static int flag_element(const sem_field *f, int e, int S, double best[2])
+/* The Dubiner modes of order P at the lattice points (i/S, j/S), i + j <=
+ * S, in scan order (j outer): every element is scanned at the same points. */
+static double *lattice_modes(int P, int S)
+{
+    const int nm = (P + 1) * (P + 2) / 2, np = (S + 1) * (S + 2) / 2;
+    double *phi = malloc(sizeof(double) * (size_t)nm * np), *o = phi;
+    if (!phi) return NULL;
+    for (int j = 0; j <= S; j++)
+        for (int i = 0; i <= S - j; i++, o += nm)
+            sem_tri_dubiner(P, (double)i / S, (double)j / S, o, NULL, NULL);
+    return phi;
+}
+
+/* Lattice scan of element e (modes: lattice_modes): does it hold sign
+ * changes of both u and v?  best[2]: the lattice point (r, s) of least
+ * |(u, v)|. */
+static int flag_element(const sem_field *f, int e, int S, const double *modes, double best[2])
 {
     double umin = HUGE_VAL, umax = -HUGE_VAL, vmin = HUGE_VAL, vmax = -HUGE_VAL, bmin = HUGE_VAL;
     for (int j = 0; j <= S; j++)
-        for (int i = 0; i <= S - j; i++) {
+        for (int i = 0; i <= S - j; i++, modes += f->nmodes) {
             double r = (double)i / S, s = (double)j / S, uv[2];
-            sem_field_eval_ref(f, e, r, s, uv, NULL, NULL);
+            sem_field_eval_modes(f, e, modes, NULL, NULL, uv, NULL, NULL);
             umin = fmin(umin, uv[0]);
             umax = fmax(umax, uv[0]);
             vmin = fmin(vmin, uv[1]);
@@ -96,7 +111,7 @@ static int flag_element(const sem_field *f, int e, int S, double best[2])
                 best[1] = s;
             }
         }
-    /* A root on a mesh vertex or edge leaves only round-off (CG) or the
+/* A root on a mesh vertex or edge leaves only round-off (CG) or the
      * inter-element jump (DG) of sign change in some of the elements around
      * it: accept near-zero extremes. */
     return umin <= FLAG_TOL && umax >= -FLAG_TOL && vmin <= FLAG_TOL && vmax >= -FLAG_TOL;
@@ -278,11 +293,17 @@ sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *fac
     const sem_locator *loc = sem_field_evaluator_locator(g->ev);
     int S = 2 * g->order > 8 ? 2 * g->order : 8, n = 0, cap = 8;
     sq_critical_point *p = malloc(sizeof *p * (size_t)cap);
-    if (!p) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    /* the modes at the lattice once, not at every element's every point */
+    double *modes = lattice_modes(g->uv->P, S);
+    if (!p || !modes) {
+        free(p);
+        free(modes);
+        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
     sq_status st = SQ_OK;
     for (int e = 0; e < m->ntris && st == SQ_OK; e++) {
         double best[2] = {1.0 / 3.0, 1.0 / 3.0};
-        if (!flag_element(g->uv, e, S, best)) continue;
+        if (!flag_element(g->uv, e, S, modes, best)) continue;
         const double starts[2][2] = {{best[0], best[1]}, {1.0 / 3.0, 1.0 / 3.0}};
         for (int k = 0; k < 2; k++) {
             int er;
@@ -372,6 +393,7 @@ sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *fac
         }
     }
     free(spread);
+    free(modes);
     if (st != SQ_OK) {
         free(p);
         return st;
