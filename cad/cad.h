@@ -197,7 +197,10 @@ double cad_face_edge_length(const cad_face *face, int edge);
 /* Evaluate edge `edge` at arc length s in [0, length], measured in the
  * direction of travel.  Any of xy[2], tangent[2] (unit, direction of travel)
  * and curvature (signed: > 0 where the boundary turns left, i.e. towards the
- * face) may be NULL. */
+ * face) may be NULL.  At s = 0 and s = length xy is the corner the edge shares
+ * with its neighbour; where the curve's own end misses it (within the
+ * closure tolerance) the gap is blended in along the edge, so that xy is
+ * continuous in s (tangent and curvature are the curve's). */
 sq_status cad_face_edge_eval(const cad_face *face, int edge, double s, double xy[2],
                              double tangent[2], double *curvature, sq_error *err);
 

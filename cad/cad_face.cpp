@@ -42,6 +42,7 @@
 #include <gp_Vec.hxx>
 
 #include <algorithm>
+#include <cfloat>
 #include <cmath>
 #include <memory>
 
@@ -82,6 +83,10 @@ struct Edge {
     std::vector<ProjBlock> pblock;
     double start[2] = {0, 0}, end[2] = {0, 0}; // 2D end points in the direction of travel,
                                                // shared exactly with the neighbouring edges
+    // start and end minus the curve's own ends (within the closure
+    // tolerance): eval_s blends them in along the edge so that its points
+    // run continuously into the shared corners
+    double gap0[2] = {0, 0}, gap1[2] = {0, 0};
 };
 
 double speed(const Edge &e, double u)
@@ -396,6 +401,20 @@ struct cad_face {
 namespace
 {
 
+// gap = corner - curve end, or 0 if below 1e-9 of the edge's length (plus
+// the coordinates' rounding): a file's own digits (STEP writes 13-17) leave
+// gaps of 1e-13 of a part, and such a jump is below anything the
+// triangulation resolves (its splits stop at 1e-2 of segments of 2^-16 of
+// the size), so the curve's points stay the curve's, to the last bit.
+static void end_gap(const double corner[2], const double curve_end[2], double length,
+                    double gap[2])
+{
+    double g[2] = {corner[0] - curve_end[0], corner[1] - curve_end[1]};
+    double least = 1e-9 * length + 8 * DBL_EPSILON * (std::fabs(corner[0]) + std::fabs(corner[1]));
+    bool real = std::hypot(g[0], g[1]) > least;
+    gap[0] = real ? g[0] : 0, gap[1] = real ? g[1] : 0;
+}
+
 sq_status face_create(const cad_model *model, int index, cad_face **out, sq_error *err)
 {
     int nf = model->faces.Extent();
@@ -565,6 +584,13 @@ sq_status face_create(const cad_model *model, int index, cad_face **out, sq_erro
                 a.end[d] = b.start[d] = pj[d];
         }
     }
+    for (Edge &e : f->edges) {
+        double c0[2], c1[2];
+        f->eval_u(e, e.reversed ? e.u1 : e.u0, c0, nullptr, nullptr);
+        f->eval_u(e, e.reversed ? e.u0 : e.u1, c1, nullptr, nullptr);
+        end_gap(e.start, c0, e.length, e.gap0);
+        end_gap(e.end, c1, e.length, e.gap1);
+    }
     for (const Edge &e : f->edges) f->edge_name.push_back(sqcad::edge_name(model, e.edge, gap_tol));
     *out = f.release();
     return SQ_OK;
@@ -686,6 +712,27 @@ static sq_status check_edge(const cad_face *face, int edge, const char *fn, sq_e
     return SQ_OK;
 }
 
+// The point at arc length s (direction of travel) of the curve at parameter
+// u: the curve's point plus its end gaps blended in linearly in s, exactly
+// the shared corners at both ends.  A file's curves may miss its vertices by
+// up to the closure tolerance; without the blend the edge would jump there,
+// and a chord halved towards the corner would never come close to it.
+static void edge_point(const cad_face *face, const Edge &e, double u, double s, double xy[2])
+{
+    if (s == 0) {
+        xy[0] = e.start[0], xy[1] = e.start[1];
+        return;
+    }
+    if (s == e.length) {
+        xy[0] = e.end[0], xy[1] = e.end[1];
+        return;
+    }
+    face->eval_u(e, u, xy, nullptr, nullptr);
+    double t = s / e.length;
+    for (int d = 0; d < 2; ++d)
+        if (e.gap0[d] != 0 || e.gap1[d] != 0) xy[d] += (1 - t) * e.gap0[d] + t * e.gap1[d];
+}
+
 sq_status cad_face_edge_eval(const cad_face *face, int edge, double s, double xy[2],
                              double tangent[2], double *curvature, sq_error *err)
 {
@@ -697,10 +744,9 @@ sq_status cad_face_edge_eval(const cad_face *face, int edge, double s, double xy
                        e.length, edge);
     try {
         s = std::min(e.length, std::max(0.0, s));
-        double sf = e.reversed ? e.length - s : s;
-        face->eval_u(e, u_of_s(e, sf), xy, tangent, curvature);
-        if (xy && s == 0) xy[0] = e.start[0], xy[1] = e.start[1];
-        if (xy && s == e.length) xy[0] = e.end[0], xy[1] = e.end[1];
+        double sf = e.reversed ? e.length - s : s, u = u_of_s(e, sf);
+        if (tangent || curvature) face->eval_u(e, u, nullptr, tangent, curvature);
+        if (xy) edge_point(face, e, u, s, xy);
         return SQ_OK;
     }
     SQCAD_CATCH(err)
@@ -837,12 +883,11 @@ sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2
         double sf = s_of_u(e, best_u);
         double st = std::min(e.length, std::max(0.0, e.reversed ? e.length - sf : sf));
         if (s) *s = st;
-        if (foot) {
-            face->eval_u(e, best_u, foot, NULL, NULL);
-            if (st == 0) foot[0] = e.start[0], foot[1] = e.start[1];
-            if (st == e.length) foot[0] = e.end[0], foot[1] = e.end[1];
-        }
-        if (dist) *dist = std::sqrt(best_d2);
+        double q[2];
+        edge_point(face, e, best_u, st, q);
+        if (foot) foot[0] = q[0], foot[1] = q[1];
+        bool gap = e.gap0[0] != 0 || e.gap0[1] != 0 || e.gap1[0] != 0 || e.gap1[1] != 0;
+        if (dist) *dist = gap ? std::hypot(p[0] - q[0], p[1] - q[1]) : std::sqrt(best_d2);
         return SQ_OK;
     }
     SQCAD_CATCH(err)

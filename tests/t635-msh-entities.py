@@ -23,7 +23,8 @@ For each:
   - an interface (no line elements): its nodes lie on the shared CAD curve
     (a straight line: to 1e-9 of the size, as t625; the circle of radius R
     to the error of an order-Q interpolant of an arc of turning angle
-    t = size / R, R t^(Q+1) / (4^(Q+1) (Q+1)!): the MSH file's nodes are the
+    t, R t^(Q+1) / (4^(Q+1) (Q+1)!), t the longest side's (from the nodes'
+    angles: a side may be longer than the size): the MSH file's nodes are the
     element maps' values at equispaced points, not projections; a node of
     the wrong curve or the inside would be an element side away), are used by
     quads of both faces, count Q * k + 1 for an open curve, Q * k for the
@@ -115,6 +116,7 @@ def check_curve(name, c, own, full, bnd, elems, ent, Q, on_shared, tol, pos):
         return
     # an interface: its nodes on the shared CAD curve, used by both faces
     far = max(abs(on_shared(*pos[n])) for n in full)
+    tol = tol([pos[n] for n in full])
     if far > tol:
         fails.append("%s: interface %d: a node %.3g off the shared curve" % (name, c, far))
     faces = [s for (d, s), v in ent.items() if d == 2 and c in [abs(b) for b in v[2]]]
@@ -158,7 +160,8 @@ def check(name, step, args, Q, on_shared, size, tmp, shared_tol=0.0):
     for (d, c), (own, full, bnd, elems) in ent.items():
         if d == 1:
             check_curve(name, c, own, full, bnd, elems, ent, Q, on_shared,
-                        max(1e-9 * size, shared_tol), pos)
+                        lambda pts: max(1e-9 * size, shared_tol(pts) if callable(shared_tol)
+                                        else shared_tol), pos)
     for image, (master, nodes, mnodes) in periodic.items():
         if nodes != ent[(1, image)][1] or mnodes != ent[(1, master)][1]:
             fails.append("%s: periodic %d of %d: %d/%d pairs, curves hold %d/%d nodes"
@@ -198,9 +201,18 @@ def main():
           lambda x, y: min(abs(x - 1), abs(x - 2.5)), 3.0, tmp)
     check("sector", gen["sector"], ["--periodic", "auto"], 5, None, 1.0, tmp)
     R, h, Q = 0.5, 0.3, 3
+
+    def arc_tol(pts):
+        # the interpolation error of the longest element side on the circle:
+        # its turning angle t is Q times the widest angular step between
+        # consecutive nodes (Q + 1 equispaced nodes a side), +10 % for the
+        # steps' unevenness; not the size h, which a side may exceed
+        a = sorted(math.atan2(y, x) for x, y in pts)
+        t = Q * max([b - c for b, c in zip(a[1:], a)] + [a[0] + 2 * math.pi - a[-1]]) * 1.1
+        return R * t ** (Q + 1) / (4 ** (Q + 1) * math.factorial(Q + 1))
+
     check("circle_square", gen["circle_square"], ["--size", str(h)], Q,
-          lambda x, y: math.hypot(x, y) - R, 2.0, tmp,
-          R * (h / R) ** (Q + 1) / (4 ** (Q + 1) * math.factorial(Q + 1)))
+          lambda x, y: math.hypot(x, y) - R, 2.0, tmp, arc_tol)
     gmsh.finalize()
     for f in fails:
         print("FAIL:", f)

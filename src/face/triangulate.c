@@ -420,20 +420,14 @@ static sq_status take_splits(const cad_face *face, bpoly *p, bdisc *b, cad_cdt_o
         vs[v] = s0 + f * (s1 - s0);
         st = bdisc_insert(b, p->edge[i], vs[v], err);
         if (st == SQ_OK) st = cad_face_edge_eval(face, p->edge[i], vs[v], X, NULL, NULL, err);
-        /* The segment ends where the next edge starts when it is the
-         * edge's last: the edges' ends may miss each other by the file's
-         * vertex tolerance, which the chord then carries to its point. */
-        double Y[2] = {c[0], c[1]};
-        if (st == SQ_OK && p->edge[p->next[i]] != p->edge[i])
-            st = cad_face_edge_eval(face, p->edge[i], s1, Y, NULL, NULL, err);
         /* 1e-2 of the segment (a curve's sagitta on short segments; lines
-         * are within round-off): moving the point onto the curve turns its
-         * triangles' angles by less than a degree where they are above
-         * the 20-degree bound, and build_mesh's Jacobian check stays the
-         * judge (it splits what came out poor); twice the carried gap; a
-         * few roundings of the coordinates */
-        double tol = 1e-2 * len + 2.0 * f * hypot(Y[0] - c[0], Y[1] - c[1]) +
-                     16.0 * DBL_EPSILON * (fabs(q[0]) + fabs(q[1]));
+         * are within round-off; an edge runs continuously into the corners
+         * it shares, cad_face_edge_eval): moving the point onto the curve
+         * turns its triangles' angles by less than a degree where they are
+         * above the 20-degree bound, and build_mesh's Jacobian check stays
+         * the judge (it splits what came out poor); a few roundings of the
+         * coordinates */
+        double tol = 1e-2 * len + 16.0 * DBL_EPSILON * (fabs(q[0]) + fabs(q[1]));
         if (hypot(X[0] - q[0], X[1] - q[1]) > tol) (*nsplit)++;
         nadopt++;
     }
