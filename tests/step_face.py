@@ -144,6 +144,20 @@ class Step:
             fh.write("ENDSEC;\nEND-ISO-10303-21;\n")
 
 
+def as_read_outer(s, short, lift, gap):
+    """The outer loop of a face that healing would spoil (t340): the
+    rectangle [0, 1] x [0, 1.5], its bottom side in three lines with a
+    middle one of length `short`, its top side a cubic B-spline whose inner
+    poles leave the plane by `lift` and whose first pole misses its vertex
+    by `gap`."""
+    pts = [(0, 0), (0.5, 0), (0.5 + short, 0), (1, 0), (1, 1.5), (0, 1.5)]
+    v = [s.vertex(p) for p in pts]
+    top = s.bspline(v[4], v[5], [(1, 1.5 + gap, 0), (2 / 3, 1.5, lift), (1 / 3, 1.5, lift),
+                                 (0, 1.5, 0)], [0, 1], [4, 4])
+    return s.loop([s.line(v[k], v[k + 1], pts[k], pts[k + 1]) for k in range(4)]
+                  + [top, s.line(v[5], v[0], pts[5], pts[0])])
+
+
 def step_face(path, loops, unit="mm"):
     """loops: polygons [(x, y), ...] (the first counter-clockwise) or ('circle', cx, cy, r)."""
     s = Step(unit)

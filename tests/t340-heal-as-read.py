@@ -26,7 +26,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from step_face import Step, info_face  # noqa: E402
+from step_face import Step, as_read_outer, info_face  # noqa: E402
 
 sq = sys.argv[1]
 S, LIFT, GAP = 5e-4, 1e-3, 1e-6
@@ -35,12 +35,7 @@ tmpdir = tempfile.TemporaryDirectory()  # removed at exit
 tmp = tmpdir.name
 step = os.path.join(tmp, "as_read.step")
 s = Step()
-pts = [(0, 0), (0.5, 0), (0.5 + S, 0), (1, 0), (1, 1.5), (0, 1.5)]
-v = [s.vertex(p) for p in pts]
-top = s.bspline(v[4], v[5], [(1, 1.5 + GAP, 0), (2 / 3, 1.5, LIFT), (1 / 3, 1.5, LIFT), (0, 1.5, 0)],
-                [0, 1], [4, 4])
-edges = [s.line(v[k], v[k + 1], pts[k], pts[k + 1]) for k in range(4)]
-s.write(step, [s.loop(edges + [top, s.line(v[5], v[0], pts[5], pts[0])])])
+s.write(step, [as_read_outer(s, S, LIFT, GAP)])
 
 
 def run(*args):

@@ -30,7 +30,7 @@ import sys
 import tempfile
 
 sys.path.insert(0, os.path.dirname(os.path.abspath(__file__)))
-from step_face import Step  # noqa: E402
+from step_face import Step, as_read_outer  # noqa: E402
 
 sq = sys.argv[1]
 S, LIFT, GAP, R, C = 5e-4, 1e-3, 1e-3, 0.3, (0.5, 0.75)
@@ -39,12 +39,7 @@ tmpdir = tempfile.TemporaryDirectory()  # removed at exit
 tmp = tmpdir.name
 step = os.path.join(tmp, "gaps.step")
 s = Step()
-pts = [(0, 0), (0.5, 0), (0.5 + S, 0), (1, 0), (1, 1.5), (0, 1.5)]
-v = [s.vertex(p) for p in pts]
-top = s.bspline(v[4], v[5], [(1, 1.5, 0), (2 / 3, 1.5, LIFT), (1 / 3, 1.5, LIFT), (0, 1.5, 0)],
-                [0, 1], [4, 4])
-outer = s.loop([s.line(v[k], v[k + 1], pts[k], pts[k + 1]) for k in range(4)]
-               + [top, s.line(v[5], v[0], pts[5], pts[0])])
+outer = as_read_outer(s, S, LIFT, 0.0)
 hv = [(C[0] + R * math.cos(math.pi / 3 * k + 0.1), C[1] + R * math.sin(math.pi / 3 * k + 0.1))
       for k in range(6)][::-1]  # clockwise: a hole
 hvert = [s.vertex(p) for p in hv]
