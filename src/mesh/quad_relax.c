@@ -801,9 +801,12 @@ static sq_status untangle_step(const cad_face *face, sq_relax_mesh *m, relax_wor
  * corner's stand-in area shrinks with the energy's progress, so the
  * barrier of the folded corners grows as fast as the minimization can
  * follow.  The first eps is the one with mu a tenth of the mean corner
- * area. */
+ * area.  It gives up after UNTANGLE_ROUNDS rounds, a round that lowers
+ * nothing, UNTANGLE_PATIENCE rounds in which the worst corner did not
+ * open further, or a folded corner with no vertex that moves. */
 #define UNTANGLE_ROUNDS 100
 #define UNTANGLE_STEPS 4
+#define UNTANGLE_PATIENCE 8
 sq_status sq_quad_untangle(const cad_face *face, sq_relax_mesh *m, sq_relax_work **keep,
                            sq_error *err)
 {
@@ -819,7 +822,8 @@ sq_status sq_quad_untangle(const cad_face *face, sq_relax_mesh *m, sq_relax_work
     int stuck = 0;
     double lo = st == SQ_OK ? smallest_corner(m, w, &mean, &stuck) : 0.0, mu = 0.1 * mean;
     double eps = lo < mu ? 2.0 * sqrt(mu * (mu - lo)) : 0.0;
-    int round = 0;
+    int round = 0, since = 0;
+    double best = lo;
     for (; round < UNTANGLE_ROUNDS && st == SQ_OK && w->ndof > 0 && !(lo > 0.0) && !stuck;
          round++) {
         double E0 = energy(m, NULL, eps), E = E0, c[2];
@@ -827,8 +831,11 @@ sq_status sq_quad_untangle(const cad_face *face, sq_relax_mesh *m, sq_relax_work
             st = untangle_step(face, m, w, eps, d, p, s0, &E, err);
         lo = smallest_corner(m, w, &mean, &stuck);
         /* no step lowered the energy: the minimizer at this eps, which
-         * the next eps does not change where the fold stays */
+         * the next eps does not change where the fold stays; or the worst
+         * corner has not opened for UNTANGLE_PATIENCE rounds */
         if (!(E < E0 * (1.0 - STALL_DROP))) break;
+        if (round == 0 || lo > best) best = lo, since = round;
+        if (round - since >= UNTANGLE_PATIENCE) break;
         double sigma = fmax(1.0 - E / E0, 0.1);
         mu = (1.0 - sigma) * chi(lo, eps, c);
         if (lo < mu) eps = 2.0 * sqrt(mu * (mu - lo));
