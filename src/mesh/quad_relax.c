@@ -824,7 +824,9 @@ sq_status sq_quad_untangle(const cad_face *face, sq_relax_mesh *m, sq_relax_work
     double eps = lo < mu ? 2.0 * sqrt(mu * (mu - lo)) : 0.0;
     int round = 0, since = 0;
     double best = lo;
-    for (; round < UNTANGLE_ROUNDS && st == SQ_OK && w->ndof > 0 && !(lo > 0.0) && !stuck;
+    /* eps = 0 only where every corner is degenerate: nothing to untangle */
+    for (; round < UNTANGLE_ROUNDS && st == SQ_OK && w->ndof > 0 && !(lo > 0.0) && !stuck &&
+           eps > 0.0;
          round++) {
         double E0 = energy(m, NULL, eps), E = E0, c[2];
         for (int k = 0; k < UNTANGLE_STEPS && st == SQ_OK; k++)
