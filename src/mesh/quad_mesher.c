@@ -51,34 +51,48 @@ static sq_status held_keep(const sq_mesher_options *opt, const qm_vmesh *v, int 
 
 static int is_quad(const sq_layout_patch *p) { return p->ncorners == 4 && p->ncycles == 1; }
 
-/* Design 3 from the glued vertex mesh on: untangling, relaxation, order Q.
- * keep (NULL, or nv flags, taken over): vertices the relaxation holds,
- * more added for opt->held_edges.  *out is NULL unless SQ_OK. */
-static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh *v,
-                        const sq_mesher_options *opt, int *keep, sq_quad_mesh **out,
-                        sq_error *err)
+/* What the Laplace moves of qm_smooth cannot open (a quad at a reflex
+ * corner whose transfinite interior node sits past the corner, a thin
+ * band of quads along a curve) untangled from its folded state, the
+ * singular points free (sq_quad_untangle): *untangled its vertices (2 nv,
+ * the caller frees), NULL unless every corner came out convex; v
+ * unchanged. */
+static sq_status untangle(const cad_face *face, const sq_face_info *info, qm_vmesh *v,
+                          const int *keep, const sq_mesher_options *opt, sq_relax_work **work,
+                          double **untangled, sq_error *err)
 {
-    int Q = opt->order;
-    sq_status st = held_keep(opt, v, &keep, err);
-    /* untangling, where transfinite interpolation folded a quad */
+    *untangled = NULL;
     int folded = 0;
-    for (int q = 0; q < v->nq && st == SQ_OK; q++) folded += !qm_quad_valid(v, q);
-    if (st == SQ_OK && folded) st = qm_smooth(face, info, v, keep, err);
-    /* relaxed with the singular points free to even out their angles, then
-     * held where the field put them, then not relaxed at all: the first of
-     * these whose curved quads all have a scaled Jacobian of at least
-     * SJ_ACCEPT, else the one with the largest smallest scaled Jacobian */
-    double *smoothed = st == SQ_OK ? malloc(sizeof(double) * 2 * ((size_t)v->nv + 1)) : NULL;
-    if (st == SQ_OK && !smoothed) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    if (st == SQ_OK) memcpy(smoothed, v->xy, sizeof(double) * 2 * (size_t)v->nv);
-    double best_sj = -HUGE_VAL;
-    sq_relax_work *work = NULL; /* the first relaxation's Hessian, for the second */
-    for (int attempt = 0; attempt < 3 && st == SQ_OK; attempt++) {
+    for (int q = 0; q < v->nq; q++) folded += !qm_quad_valid(v, q);
+    if (!folded) return SQ_OK;
+    size_t n = sizeof(double) * 2 * ((size_t)v->nv + 1);
+    double *tangled = malloc(n);
+    if (!tangled) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    memcpy(tangled, v->xy, n);
+    sq_status st = qm_relax(face, info, v, keep, 1, 1, opt, work, &folded, err);
+    if (st == SQ_OK && !folded && (*untangled = malloc(n))) memcpy(*untangled, v->xy, n);
+    if (st == SQ_OK && !folded && !*untangled) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    memcpy(v->xy, tangled, n);
+    free(tangled);
+    return st;
+}
+
+/* From the vertices start: relaxed with the singular points free to even
+ * out their angles, then held where they are, then not relaxed at all;
+ * each attempt raised to order Q and kept in *out when its smallest scaled
+ * Jacobian beats *best_sj; stops at the first of at least SJ_ACCEPT. */
+static sq_status relax_attempts(const cad_face *face, const sq_face_info *info, qm_vmesh *v,
+                                const double *start, const int *keep,
+                                const sq_mesher_options *opt, sq_relax_work **work,
+                                double *best_sj, sq_quad_mesh **out, sq_error *err)
+{
+    sq_status st = SQ_OK;
+    for (int attempt = 0; attempt < 3 && st == SQ_OK && *best_sj < SJ_ACCEPT; attempt++) {
         sq_quad_mesh *m = NULL;
-        memcpy(v->xy, smoothed, sizeof(double) * 2 * (size_t)v->nv);
+        memcpy(v->xy, start, sizeof(double) * 2 * (size_t)v->nv);
         int folded = 0;
         if (attempt < 2)
-            st = qm_relax(face, info, v, keep, attempt == 0, opt, &work, &folded, err);
+            st = qm_relax(face, info, v, keep, attempt == 0, 0, opt, work, &folded, err);
         if (folded) continue;
         /* the relaxation balances shapes against sizes and moves the
          * layers' nodes along their lines by up to a third of a cell: the
@@ -87,20 +101,52 @@ static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh
         if (st == SQ_OK && opt->nbl > 0 && attempt < 2)
             st = qm_regrade_walls(opt, sq_mesher_size(opt, info->area), opt->bl_layers, v, NULL,
                                   err);
-        if (st == SQ_OK) st = qm_raise_order(face, v, Q, opt->nodes, opt, &m, err);
+        if (st == SQ_OK) st = qm_raise_order(face, v, opt->order, opt->nodes, opt, &m, err);
         sq_quad_quality qq;
         if (st == SQ_OK) st = sq_quad_mesh_quality(m, NULL, NULL, opt->threads, &qq, err);
-        if (st == SQ_OK && qq.min_scaled_jacobian > best_sj) {
-            best_sj = qq.min_scaled_jacobian;
+        if (st == SQ_OK && qq.min_scaled_jacobian > *best_sj) {
+            *best_sj = qq.min_scaled_jacobian;
             sq_quad_mesh_free(out);
             *out = m;
             m = NULL;
         }
         sq_quad_mesh_free(&m);
-        if (best_sj >= SJ_ACCEPT) break;
     }
+    return st;
+}
+
+/* Design 3 from the glued vertex mesh on: untangling, relaxation, order Q.
+ * keep (NULL, or nv flags, taken over): vertices the relaxation holds,
+ * more added for opt->held_edges.  *out is NULL unless SQ_OK. */
+static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh *v,
+                        const sq_mesher_options *opt, int *keep, sq_quad_mesh **out,
+                        sq_error *err)
+{
+    sq_status st = held_keep(opt, v, &keep, err);
+    /* untangling, where transfinite interpolation folded a quad: Laplace
+     * moves that keep every quad valid, then from the folded state */
+    int folded = 0;
+    for (int q = 0; q < v->nq && st == SQ_OK; q++) folded += !qm_quad_valid(v, q);
+    if (st == SQ_OK && folded) st = qm_smooth(face, info, v, keep, err);
+    sq_relax_work *work = NULL; /* the first relaxation's Hessian, for the next */
+    double *untangled = NULL;
+    if (st == SQ_OK && folded) st = untangle(face, info, v, keep, opt, &work, &untangled, err);
+    /* the attempts from the untangled mesh, then (unless one reached
+     * SJ_ACCEPT) from the smoothed one, whose corners on a curve may be
+     * non-convex as chords while the curved quads are valid (a narrow gap
+     * between a hole and a corner): the first attempt of at least
+     * SJ_ACCEPT, else the one with the largest smallest scaled Jacobian */
+    double *smoothed = st == SQ_OK ? malloc(sizeof(double) * 2 * ((size_t)v->nv + 1)) : NULL;
+    if (st == SQ_OK && !smoothed) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) memcpy(smoothed, v->xy, sizeof(double) * 2 * (size_t)v->nv);
+    double best_sj = -HUGE_VAL;
+    if (st == SQ_OK && untangled)
+        st = relax_attempts(face, info, v, untangled, keep, opt, &work, &best_sj, out, err);
+    if (st == SQ_OK)
+        st = relax_attempts(face, info, v, smoothed, keep, opt, &work, &best_sj, out, err);
     sq_relax_work_free(&work);
     if (st != SQ_OK) sq_quad_mesh_free(out);
+    free(untangled);
     free(smoothed);
     free(keep);
     return st;

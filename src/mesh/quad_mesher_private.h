@@ -152,10 +152,11 @@ int qm_quad_valid(const qm_vmesh *v, int q);
 sq_status qm_smooth(const cad_face *face, const sq_face_info *info, qm_vmesh *v, const int *keep,
                     sq_error *err);
 /* Winslow relaxation (quad_relax.h) with the singular points free or held;
- * keeping the quads' aspect ratios where opt has the user's sizes. */
+ * keeping the quads' aspect ratios where opt has the user's sizes;
+ * untangle: the untangling of folded corners instead (sq_quad_untangle). */
 sq_status qm_relax(const cad_face *face, const sq_face_info *info, qm_vmesh *v, const int *keep,
-                   int move_singular, const sq_mesher_options *opt, sq_relax_work **work,
-                   int *folded, sq_error *err);
+                   int move_singular, int untangle, const sq_mesher_options *opt,
+                   sq_relax_work **work, int *folded, sq_error *err);
 
 /* ---- quad_raise.c: design 4 ---- */
 

@@ -236,6 +236,79 @@ static double corner_energy(const double e[4])
     return D > 0.0 ? (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3]) / D : HUGE_VAL;
 }
 
+/* chi(D, eps) = (D + sqrt(D^2 + eps^2)) / 2, the positive stand-in for a
+ * corner's area D of Garanzha, Kaporin, Kudryavtseva, Protais, Ray and
+ * Sokolov (ACM TOG 40(4) 2021, "Foldover-free maps in 50 lines of code",
+ * eq. (3)): it tends to max(D, 0) as eps -> 0; its first and second
+ * derivatives in D in c[0], c[1].  Written without the cancellation of
+ * D + sqrt(.) where D < 0. */
+static double chi(double D, double eps, double c[2])
+{
+    double r = sqrt(D * D + eps * eps), e2 = eps * eps;
+    c[0] = D >= 0.0 ? 0.5 * (1.0 + D / r) : 0.5 * e2 / (r * (r - D));
+    c[1] = 0.5 * e2 / (r * r * r);
+    return D >= 0.0 ? 0.5 * (D + r) : 0.5 * e2 / (r - D);
+}
+
+/* The untangling energy of a corner: Winslow's with its area D replaced by
+ * chi(D, eps), finite on a folded corner (Garanzha et al. 2021, eq. (4),
+ * its shape term). */
+static double untangle_energy(const double e[4], double eps)
+{
+    double c[2];
+    return (e[0] * e[0] + e[1] * e[1] + e[2] * e[2] + e[3] * e[3]) /
+           chi(e[0] * e[3] - e[1] * e[2], eps, c);
+}
+
+/* Gradient and projected Hessian of untangle_energy, by the splitting of
+ * corner_derivatives: f = phi(a, b) = (a + b) / chi((a - b) / 2), so
+ *   g = 2 phi_a u + 2 phi_b w,
+ *   H = 2 phi_a P+ + 2 phi_b P- + 4 [phi_aa u u^T + phi_ab (u w^T + w u^T)
+ *       + phi_bb w w^T],
+ * with S = a + b, x = chi, x' and x'' its derivatives in D:
+ *   phi_a = 1 / x - S x' / (2 x^2),  phi_b = 1 / x + S x' / (2 x^2),
+ *   phi_aa = -x' / x^2 + k,  phi_bb = x' / x^2 + k,  phi_ab = -k,
+ *   k = S x'^2 / (2 x^3) - S x'' / (4 x^2).
+ * Its eigenvalues: 2 phi_a normal to u in P+'s plane, 2 phi_b normal to w
+ * in P-'s, and those of the 2 x 2 block of the plane of uh, wh; each
+ * clamped to zero.  (At eps = 0, D > 0 these are corner_derivatives'.) */
+static void untangle_derivatives(const double e[4], double eps, double g[4], double H[16])
+{
+    static const double PM[16] = {0.5, 0, 0, -0.5, 0, 0.5, 0.5, 0, 0, 0.5, 0.5, 0, -0.5, 0, 0, 0.5};
+    double c0 = 0.5 * (e[0] + e[3]), c1 = 0.5 * (e[1] - e[2]);
+    double w0 = 0.5 * (e[0] - e[3]), w1 = 0.5 * (e[1] + e[2]);
+    double u[4] = {c0, c1, -c1, c0}, w[4] = {w0, w1, w1, -w0};
+    double a = 2.0 * (c0 * c0 + c1 * c1), b = 2.0 * (w0 * w0 + w1 * w1), S = a + b, c[2];
+    double x = chi(0.5 * (a - b), eps, c), x2 = x * x;
+    double pa = 1.0 / x - S * c[0] / (2.0 * x2), pb = 1.0 / x + S * c[0] / (2.0 * x2);
+    double k = S * c[0] * c[0] / (2.0 * x2 * x) - S * c[1] / (4.0 * x2);
+    double paa = -c[0] / x2 + k, pbb = c[0] / x2 + k, pab = -k;
+    double ra = sqrt(a), rb = sqrt(b);
+    double uh[4] = {M_SQRT1_2, 0.0, 0.0, M_SQRT1_2}, wh[4] = {M_SQRT1_2, 0.0, 0.0, -M_SQRT1_2};
+    for (int i = 0; i < 4; i++) {
+        g[i] = 2.0 * pa * u[i] + 2.0 * pb * w[i];
+        if (ra > 0.0) uh[i] = u[i] / ra;
+        if (rb > 0.0) wh[i] = w[i] / rb;
+    }
+    double M11 = 2.0 * pa + 4.0 * a * paa, M22 = 2.0 * pb + 4.0 * b * pbb,
+           M12 = 4.0 * ra * rb * pab;
+    double half = 0.5 * (M11 - M22), r = sqrt(half * half + M12 * M12);
+    double lp = fmax(0.5 * (M11 + M22) + r, 0.0), lm = fmax(0.5 * (M11 + M22) - r, 0.0);
+    double v0 = half >= 0.0 ? r + half : M12, v1 = half >= 0.0 ? M12 : r - half;
+    double nv = sqrt(v0 * v0 + v1 * v1), z[4], y[4];
+    if (!(nv > 0.0)) v0 = 1.0, v1 = 0.0, nv = 1.0; /* M a multiple of I */
+    for (int i = 0; i < 4; i++) {
+        z[i] = (v0 * uh[i] + v1 * wh[i]) / nv;
+        y[i] = (-v1 * uh[i] + v0 * wh[i]) / nv;
+    }
+    double qa = fmax(2.0 * pa, 0.0), qb = fmax(2.0 * pb, 0.0);
+    for (int i = 0; i < 4; i++)
+        for (int j = 0; j < 4; j++)
+            H[4 * i + j] = qa * ((i == j) - PM[4 * i + j] - uh[i] * uh[j]) +
+                           qb * (PM[4 * i + j] - wh[i] * wh[j]) + lp * z[i] * z[j] +
+                           lm * y[i] * y[j];
+}
+
 /* With sizes: per quad, its target (quad_relax.h) from l0 and l1, its
  * mean lengths of sides 0 and 2 and of sides 1 and 3 at the start, scaled
  * by c = min(1, h(d0) / l0, h(d1) / l1), h(dk) the size at its centre in
@@ -300,7 +373,8 @@ static double target_energy(const double *t, int q, const double e[4])
     return f + size_term(e[0] * e[3] - e[1] * e[2], t[2 * q + 1], &d1, &d2);
 }
 
-static double energy(const sq_relax_mesh *m, const double *target)
+/* The mesh's energy: with eps > 0 the untangling one (target unused). */
+static double energy(const sq_relax_mesh *m, const double *target, double eps)
 {
     double E = 0.0;
     for (int q = 0; q < m->nq && E < HUGE_VAL; q++)
@@ -309,6 +383,10 @@ static double energy(const sq_relax_mesh *m, const double *target)
             corner_vertices(m, q, k, v);
             const double *c = &m->xy[2 * v[0]], *a = &m->xy[2 * v[1]], *b = &m->xy[2 * v[2]];
             double e[4] = {a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1]};
+            if (eps > 0.0) {
+                E += untangle_energy(e, eps);
+                continue;
+            }
             corner_target(target, q, k, e);
             E += target_energy(target, q, e);
         }
@@ -457,10 +535,10 @@ static void corner_blocks(const double He[16], double M[6][4])
  * the vertices move little, much cheaper than factoring; by factoring H
  * when fresh, at the first step of all, or when PCG_MAXIT iterations do
  * not do: *factored.  exact: H the corners' exact Hessians, by PCG only.
- * *gd = g . d. */
+ * eps > 0: the untangling energy's (target unused).  *gd = g . d. */
 static sq_status newton_direction(const sq_relax_mesh *m, relax_work *w, int fresh, int exact,
-                                  const double *target, double *d, double *gd, int *factored,
-                                  sq_error *err)
+                                  const double *target, double eps, double *d, double *gd,
+                                  int *factored, sq_error *err)
 {
     double *g = calloc((size_t)w->ndof + 1, sizeof(double)),
            *gx = calloc(2 * (size_t)m->nv + 1, sizeof(double)),
@@ -477,9 +555,13 @@ static sq_status newton_direction(const sq_relax_mesh *m, relax_work *w, int fre
             corner_vertices(m, q, k, v);
             const double *c = &m->xy[2 * v[0]], *a = &m->xy[2 * v[1]], *b = &m->xy[2 * v[2]];
             double e[4] = {a[0] - c[0], a[1] - c[1], b[0] - c[0], b[1] - c[1]}, ge[4], He[16];
-            double sc = corner_target(target, q, k, e);
-            corner_derivatives(e, exact, ge, He);
-            if (target) target_derivatives(target[2 * q + 1], sc, e, exact, ge, He);
+            if (eps > 0.0) {
+                untangle_derivatives(e, eps, ge, He);
+            } else {
+                double sc = corner_target(target, q, k, e);
+                corner_derivatives(e, exact, ge, He);
+                if (target) target_derivatives(target[2 * q + 1], sc, e, exact, ge, He);
+            }
             /* the gradient in the plane, per vertex (a sliding vertex's
              * component along its tangent below) */
             gx[2 * v[0]] -= ge[0] + ge[2];
@@ -637,7 +719,10 @@ static int work_fits(const relax_work *w, const sq_relax_mesh *m)
     return 1;
 }
 
-sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **keep, sq_error *err)
+/* The work for relaxing m: the kept one where it fits, else made (and
+ * kept when keep is not NULL); then begun. */
+static sq_status acquire(const cad_face *face, const sq_relax_mesh *m, sq_relax_work **keep,
+                         relax_work **out, sq_error *err)
 {
     relax_work *w = keep ? *keep : NULL;
     if (w && !work_fits(w, m)) {
@@ -651,7 +736,124 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
         if (st != SQ_OK) sq_relax_work_free(&w);
         if (keep) *keep = w;
     }
-    if (st == SQ_OK) st = begin(face, m, w, err);
+    *out = w;
+    return st == SQ_OK ? begin(face, m, w, err) : st;
+}
+
+/* The smallest area e1 x e2 of a corner of m and the mean of their
+ * absolute values; *stuck: a corner that is not convex has none of its
+ * three vertices moving. */
+static double smallest_corner(const sq_relax_mesh *m, const relax_work *w, double *mean,
+                              int *stuck)
+{
+    double lo = HUGE_VAL, sum = 0.0;
+    *stuck = 0;
+    for (int q = 0; q < m->nq; q++)
+        for (int k = 0; k < 4; k++) {
+            int v[3];
+            corner_vertices(m, q, k, v);
+            const double *c = &m->xy[2 * v[0]], *a = &m->xy[2 * v[1]], *b = &m->xy[2 * v[2]];
+            double D = (a[0] - c[0]) * (b[1] - c[1]) - (a[1] - c[1]) * (b[0] - c[0]);
+            lo = fmin(lo, D);
+            sum += fabs(D);
+            *stuck |= !(D > 0.0) && w->var[v[0]] < 0 && w->var[v[1]] < 0 && w->var[v[2]] < 0;
+        }
+    *mean = sum / (4.0 * m->nq + 1e-300);
+    return lo;
+}
+
+/* One projected Newton step on the untangling energy at eps, from energy
+ * *E, halved until it decreases (*E updated; unchanged when no step does).
+ * d, p, s0: scratch of the sizes sq_quad_relax gives them. */
+static sq_status untangle_step(const cad_face *face, sq_relax_mesh *m, relax_work *w, double eps,
+                               double *d, double *p, double *s0, double *E, sq_error *err)
+{
+    sq_status st = SQ_OK;
+    for (int i = 0; i < m->nv && st == SQ_OK; i++)
+        if (w->var[i] >= 0 && w->edge[i] >= 0)
+            st = qr_on_edge(face, w, i, &w->s[i], &m->xy[2 * i], &w->tan[2 * i], err);
+    double gd = 0.0;
+    int factored = 0;
+    if (st == SQ_OK) st = newton_direction(m, w, 0, 0, NULL, eps, d, &gd, &factored, err);
+    if (st != SQ_OK || !(gd < 0.0)) return st;
+    memcpy(p, m->xy, sizeof(double) * 2 * (size_t)m->nv);
+    memcpy(s0, w->s, sizeof(double) * (size_t)m->nv);
+    double t = 1.0;
+    for (int h = 0; h < MAX_HALVINGS && st == SQ_OK; h++, t *= 0.5) {
+        st = place(face, m, w, p, s0, d, t, err);
+        double E1 = st == SQ_OK ? energy(m, NULL, eps) : HUGE_VAL;
+        if (E1 < *E) {
+            *E = E1;
+            return st;
+        }
+    }
+    memcpy(m->xy, p, sizeof(double) * 2 * (size_t)m->nv);
+    memcpy(w->s, s0, sizeof(double) * (size_t)m->nv);
+    return st;
+}
+
+/* Untangling (Garanzha et al. 2021, section 3): the untangling energy
+ * minimized for a decreasing sequence of eps until every corner is convex.
+ * After each round of UNTANGLE_STEPS Newton steps, with sigma = max(1 -
+ * E / E0, 1/10) (E0, E the energy before and after the round) and D- the
+ * smallest corner area, mu = (1 - sigma) chi(D-, eps) and the next eps =
+ * 2 sqrt(mu (mu - D-)), the eps at which chi(D-, eps) = mu: the worst
+ * corner's stand-in area shrinks with the energy's progress, so the
+ * barrier of the folded corners grows as fast as the minimization can
+ * follow.  The first eps is the one with mu a tenth of the mean corner
+ * area.  It gives up after UNTANGLE_ROUNDS rounds, a round that lowers
+ * nothing, UNTANGLE_PATIENCE rounds in which the worst corner did not
+ * open further, or a folded corner with no vertex that moves. */
+#define UNTANGLE_ROUNDS 100
+#define UNTANGLE_STEPS 4
+#define UNTANGLE_PATIENCE 8
+sq_status sq_quad_untangle(const cad_face *face, sq_relax_mesh *m, sq_relax_work **keep,
+                           sq_error *err)
+{
+    relax_work *w = NULL;
+    sq_status st = acquire(face, m, keep, &w, err);
+    double *d = NULL, *p = NULL, *s0 = NULL, mean = 0.0;
+    if (st == SQ_OK) {
+        d = malloc(sizeof(double) * ((size_t)w->ndof + 1));
+        p = malloc(sizeof(double) * 2 * ((size_t)m->nv + 1));
+        s0 = malloc(sizeof(double) * ((size_t)m->nv + 1));
+        if (!d || !p || !s0) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    }
+    int stuck = 0;
+    double lo = st == SQ_OK ? smallest_corner(m, w, &mean, &stuck) : 0.0, mu = 0.1 * mean;
+    double eps = lo < mu ? 2.0 * sqrt(mu * (mu - lo)) : 0.0;
+    int round = 0, since = 0;
+    double best = lo;
+    /* eps = 0 only where every corner is degenerate: nothing to untangle */
+    for (; round < UNTANGLE_ROUNDS && st == SQ_OK && w->ndof > 0 && !(lo > 0.0) && !stuck &&
+           eps > 0.0;
+         round++) {
+        double E0 = energy(m, NULL, eps), E = E0, c[2];
+        for (int k = 0; k < UNTANGLE_STEPS && st == SQ_OK; k++)
+            st = untangle_step(face, m, w, eps, d, p, s0, &E, err);
+        lo = smallest_corner(m, w, &mean, &stuck);
+        /* no step lowered the energy: the minimizer at this eps, which
+         * the next eps does not change where the fold stays; or the worst
+         * corner has not opened for UNTANGLE_PATIENCE rounds */
+        if (!(E < E0 * (1.0 - STALL_DROP))) break;
+        if (round == 0 || lo > best) best = lo, since = round;
+        if (round - since >= UNTANGLE_PATIENCE) break;
+        double sigma = fmax(1.0 - E / E0, 0.1);
+        mu = (1.0 - sigma) * chi(lo, eps, c);
+        if (lo < mu) eps = 2.0 * sqrt(mu * (mu - lo));
+    }
+    m->folded = !(lo > 0.0);
+    if (!keep) sq_relax_work_free(&w);
+    free(d);
+    free(p);
+    free(s0);
+    return st;
+}
+
+sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **keep, sq_error *err)
+{
+    relax_work *w = NULL;
+    sq_status st = acquire(face, m, keep, &w, err);
     if (st == SQ_OK) w->steps = 0, w->polls = 0;
     double *d = NULL, *p = NULL, *s0 = NULL, *held = NULL, *target = NULL;
     char *was = NULL;
@@ -670,7 +872,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
             held[i] = -1.0;
     }
     /* a mesh with a non-convex corner is left to the caller's untangling */
-    double E = st == SQ_OK ? energy(m, target) : HUGE_VAL, lo[2] = {HUGE_VAL, HUGE_VAL},
+    double E = st == SQ_OK ? energy(m, target, 0.0) : HUGE_VAL, lo[2] = {HUGE_VAL, HUGE_VAL},
            hi[2] = {-HUGE_VAL, -HUGE_VAL};
     for (int i = 0; i < m->nv; i++)
         for (int c = 0; c < 2; c++) {
@@ -688,7 +890,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
                 st = qr_on_edge(face, w, i, &w->s[i], &m->xy[2 * i], &w->tan[2 * i], err);
         double gd = 0.0;
         int factored = 0;
-        if (st == SQ_OK) st = newton_direction(m, w, fresh, exact, target, d, &gd, &factored, err);
+        if (st == SQ_OK) st = newton_direction(m, w, fresh, exact, target, 0.0, d, &gd, &factored, err);
         if (st != SQ_OK || (exact && !(gd < 0.0))) break; /* no exact step */
         fresh = 0;
         w->steps++;
@@ -698,7 +900,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
         int h = 0;
         for (; h < MAX_HALVINGS && st == SQ_OK; h++, t *= 0.5) {
             st = place(face, m, w, p, s0, d, t, err);
-            if (st == SQ_OK && (E1 = energy(m, target)) < E) break;
+            if (st == SQ_OK && (E1 = energy(m, target, 0.0)) < E) break;
         }
         /* no decrease left: converged, or an inexact direction, retried
          * with a factorization */
@@ -722,7 +924,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
          * ratios 1.2-1.3 */
         if (h == 0 && rho > DOUBLE_RHO && rho < 2.0 - 1.0 / MAX_PARABOLA_STEP) {
             st = place(face, m, w, p, s0, d, 1.0 / (2.0 - rho), err);
-            double E2 = st == SQ_OK ? energy(m, target) : HUGE_VAL;
+            double E2 = st == SQ_OK ? energy(m, target, 0.0) : HUGE_VAL;
             if (E2 < E1)
                 E1 = E2;
             else if (st == SQ_OK)
@@ -731,7 +933,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
             double tx = 1.0;
             for (int x = 0; x < MAX_DOUBLINGS && st == SQ_OK; x++, tx *= 2.0) {
                 st = place(face, m, w, p, s0, d, 2.0 * tx, err);
-                double E2 = st == SQ_OK ? energy(m, target) : HUGE_VAL;
+                double E2 = st == SQ_OK ? energy(m, target, 0.0) : HUGE_VAL;
                 if (!(E2 < E1)) break;
                 E1 = E2;
             }

@@ -84,6 +84,15 @@ typedef struct sq_relax_work sq_relax_work;
  * it with sq_relax_work_free. */
 sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **work,
                         sq_error *err);
+/* Untangle m, a mesh with folded (non-convex) corners, which
+ * sq_quad_relax cannot start from: the relaxation's energy with each
+ * corner's area D replaced by a positive stand-in chi(D, eps), minimized
+ * for decreasing eps until every corner is convex (Garanzha et al. 2021);
+ * the same vertices move, the same way, as in sq_quad_relax (work as
+ * there).  m->folded = 1 when corners are still not convex after its
+ * rounds (xy where it stopped). */
+sq_status sq_quad_untangle(const cad_face *face, sq_relax_mesh *m, sq_relax_work **work,
+                           sq_error *err);
 void sq_relax_work_free(sq_relax_work **work); /* NULL-safe, NULLs *work */
 /* What the last relaxation with this work did: its Newton iterations (at
  * most 60, a retry with a fresh factorization included) and its compass search's

@@ -164,40 +164,52 @@ sq_status qm_smooth(const cad_face *face, const sq_face_info *info, qm_vmesh *v,
     return st;
 }
 
+/* The vertices the relaxation holds (nv + 1 flags, NULL when out of
+ * memory): keep, the face's corners and, unless move_singular, the
+ * interior vertices of valence other than 4. */
+static int *held_vertices(const sq_face_info *info, const qm_vmesh *v, const int *keep,
+                          int move_singular)
+{
+    int *deg = calloc((size_t)v->nv + 1, sizeof(int)), *bnd = calloc((size_t)v->nv + 1, sizeof(int));
+    int *fixed = calloc((size_t)v->nv + 1, sizeof(int));
+    if (deg && bnd && fixed) {
+        for (int q = 0; q < v->nq; q++)
+            for (int k = 0; k < 4; k++) {
+                deg[v->quad[4 * q + k]]++;
+                if (v->side_tag[4 * q + k] >= 0)
+                    bnd[v->quad[4 * q + k]] = bnd[v->quad[4 * q + (k + 1) % 4]] = 1;
+            }
+        for (int i = 0; i < v->nv; i++)
+            fixed[i] = (keep && keep[i]) || (!bnd[i] && deg[i] != 4 && !move_singular) ||
+                       (bnd[i] && at_face_corner(info, &v->xy[2 * i]));
+    } else {
+        free(fixed);
+        fixed = NULL;
+    }
+    free(deg);
+    free(bnd);
+    return fixed;
+}
+
 /* Design 3b: the whole vertex mesh relaxed towards an orthogonal map
  * (quad_relax.h); what stays: singular points (interior vertices of valence
  * other than 4), the face's corners and the boundary layers.  With the
  * singular points free the relaxation gives up once it folds a curved
  * boundary quad (*folded): the attempt with them held follows.  With the
- * user's sizes (opt->sizes) the quads keep the grid's grading. */
+ * user's sizes (opt->sizes) the quads keep the grid's grading.  untangle:
+ * sq_quad_untangle instead, the singular points free (*folded: corners
+ * still not convex). */
 sq_status qm_relax(const cad_face *face, const sq_face_info *info, qm_vmesh *v, const int *keep,
-                   int move_singular, const sq_mesher_options *opt, sq_relax_work **work,
-                   int *folded, sq_error *err)
+                   int move_singular, int untangle, const sq_mesher_options *opt,
+                   sq_relax_work **work, int *folded, sq_error *err)
 {
-    int *deg = calloc((size_t)v->nv + 1, sizeof(int)), *bnd = calloc((size_t)v->nv + 1, sizeof(int));
-    int *fixed = calloc((size_t)v->nv + 1, sizeof(int));
-    if (!deg || !bnd || !fixed) {
-        free(deg);
-        free(bnd);
-        free(fixed);
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    }
-    for (int q = 0; q < v->nq; q++)
-        for (int k = 0; k < 4; k++) {
-            deg[v->quad[4 * q + k]]++;
-            if (v->side_tag[4 * q + k] >= 0)
-                bnd[v->quad[4 * q + k]] = bnd[v->quad[4 * q + (k + 1) % 4]] = 1;
-        }
-    for (int i = 0; i < v->nv; i++)
-        fixed[i] = (keep && keep[i]) || (!bnd[i] && deg[i] != 4 && !move_singular) ||
-                   (bnd[i] && at_face_corner(info, &v->xy[2 * i]));
+    int *fixed = held_vertices(info, v, keep, move_singular || untangle);
+    if (!fixed) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     double far = sq_mesher_size(opt, info->area);
     sq_relax_mesh rm = {v->nv,         v->nq, v->xy,          v->quad,          v->side_tag, fixed,
                         move_singular, 0,     opt->progress, opt->sizes, far};
-    sq_status st = sq_quad_relax(face, &rm, work, err);
+    sq_status st = untangle ? sq_quad_untangle(face, &rm, work, err) : sq_quad_relax(face, &rm, work, err);
     *folded = rm.folded;
-    free(deg);
-    free(bnd);
     free(fixed);
     return st;
 }
