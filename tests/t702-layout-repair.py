@@ -68,9 +68,9 @@ def check(path, tmp):
     if p.returncode != 0:
         return "exit %d: %s" % (p.returncode, p.stderr.strip().splitlines()[-1:])
     d = json.load(open(rep))
-    m, lay = d["mesh"], d["layout"]
-    if d["road"] != "layout" or not lay["valid"]:
-        return "road %s, layout valid %s" % (d["road"], lay["valid"])
+    m, lay = d["mesh"], d.get("layout", {})
+    if d["road"] != "layout" or not lay.get("valid"):
+        return "road %s, layout valid %s" % (d["road"], lay.get("valid"))
     if m["inverted"] != 0 or not m["min_scaled_jacobian"] > 0:
         return "%d inverted, min scaled Jacobian %g" % (m["inverted"], m["min_scaled_jacobian"])
     irr = m.get("irregular_interior_vertices")

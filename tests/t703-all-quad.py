@@ -71,7 +71,7 @@ def check(path, fid):
     if p.returncode != 0:
         return "exit %d: %s" % (p.returncode, p.stderr.strip().splitlines()[-1:])
     d = json.load(open(rep))
-    m, lay = d["mesh"], d["layout"]
+    m, lay = d["mesh"], d.get("layout", {})
     if d["road"] != "layout" or "all-quad last resort" not in d.get("road_reason", ""):
         return "road %s (%s), expected the layout road's all-quad last resort" % (
             d["road"], d.get("road_reason"))
