@@ -55,8 +55,8 @@ static int is_quad(const sq_layout_patch *p) { return p->ncorners == 4 && p->ncy
  * corner whose transfinite interior node sits past the corner, a thin
  * band of quads along a curve) untangled from its folded state, the
  * singular points free (sq_quad_untangle): *untangled its vertices (2 nv,
- * the caller frees), NULL unless every corner came out convex; v
- * unchanged. */
+ * the caller frees), NULL unless every corner came out convex; v's
+ * vertices are left where the untangling stopped. */
 static sq_status untangle(const cad_face *face, const sq_face_info *info, qm_vmesh *v,
                           const int *keep, const sq_mesher_options *opt, sq_relax_work **work,
                           double **untangled, sq_error *err)
@@ -65,16 +65,12 @@ static sq_status untangle(const cad_face *face, const sq_face_info *info, qm_vme
     int folded = 0;
     for (int q = 0; q < v->nq; q++) folded += !qm_quad_valid(v, q);
     if (!folded) return SQ_OK;
-    size_t n = sizeof(double) * 2 * ((size_t)v->nv + 1);
-    double *tangled = malloc(n);
-    if (!tangled) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    memcpy(tangled, v->xy, n);
     sq_status st = qm_relax(face, info, v, keep, 1, 1, opt, work, &folded, err);
-    if (st == SQ_OK && !folded && (*untangled = malloc(n))) memcpy(*untangled, v->xy, n);
-    if (st == SQ_OK && !folded && !*untangled) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    memcpy(v->xy, tangled, n);
-    free(tangled);
-    return st;
+    if (st != SQ_OK || folded) return st;
+    size_t n = sizeof(double) * 2 * ((size_t)v->nv + 1);
+    if (!(*untangled = malloc(n))) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    memcpy(*untangled, v->xy, n);
+    return SQ_OK;
 }
 
 /* From the vertices start: relaxed with the singular points free to even
@@ -128,6 +124,9 @@ static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh
     int folded = 0;
     for (int q = 0; q < v->nq && st == SQ_OK; q++) folded += !qm_quad_valid(v, q);
     if (st == SQ_OK && folded) st = qm_smooth(face, info, v, keep, err);
+    double *smoothed = st == SQ_OK ? malloc(sizeof(double) * 2 * ((size_t)v->nv + 1)) : NULL;
+    if (st == SQ_OK && !smoothed) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    if (st == SQ_OK) memcpy(smoothed, v->xy, sizeof(double) * 2 * (size_t)v->nv);
     sq_relax_work *work = NULL; /* the first relaxation's Hessian, for the next */
     double *untangled = NULL;
     if (st == SQ_OK && folded) st = untangle(face, info, v, keep, opt, &work, &untangled, err);
@@ -135,10 +134,9 @@ static sq_status finish(const cad_face *face, const sq_face_info *info, qm_vmesh
      * SJ_ACCEPT) from the smoothed one, whose corners on a curve may be
      * non-convex as chords while the curved quads are valid (a narrow gap
      * between a hole and a corner): the first attempt of at least
-     * SJ_ACCEPT, else the one with the largest smallest scaled Jacobian */
-    double *smoothed = st == SQ_OK ? malloc(sizeof(double) * 2 * ((size_t)v->nv + 1)) : NULL;
-    if (st == SQ_OK && !smoothed) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    if (st == SQ_OK) memcpy(smoothed, v->xy, sizeof(double) * 2 * (size_t)v->nv);
+     * SJ_ACCEPT, else the one with the largest smallest scaled Jacobian
+     * (each attempt starts from its buffer, whatever the untangling left
+     * in v) */
     double best_sj = -HUGE_VAL;
     if (st == SQ_OK && untangled)
         st = relax_attempts(face, info, v, untangled, keep, opt, &work, &best_sj, out, err);

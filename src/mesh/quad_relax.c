@@ -762,33 +762,51 @@ static double smallest_corner(const sq_relax_mesh *m, const relax_work *w, doubl
     return lo;
 }
 
+/* The boundary vertices that slide: their arc lengths and tangents at
+ * their current places, the frame of the next Newton direction. */
+static sq_status onto_edges(const cad_face *face, sq_relax_mesh *m, relax_work *w, sq_error *err)
+{
+    for (int i = 0; i < m->nv; i++)
+        if (w->var[i] >= 0 && w->edge[i] >= 0)
+            SQ_TRY(qr_on_edge(face, w, i, &w->s[i], &m->xy[2 * i], &w->tan[2 * i], err));
+    return SQ_OK;
+}
+
+/* Backtracking along d from m's vertices (saved in p and s0): the step
+ * t d for t = 1, 1/2, ... until the energy (target, eps) falls below E;
+ * *E1 that energy, *h the halvings it took.  When none of MAX_HALVINGS
+ * does (*h = MAX_HALVINGS) or a placement fails, m is put back at p, s0. */
+static sq_status backtrack(const cad_face *face, sq_relax_mesh *m, relax_work *w, const double *d,
+                           const double *target, double eps, double E, double *p, double *s0,
+                           double *E1, int *h, sq_error *err)
+{
+    memcpy(p, m->xy, sizeof(double) * 2 * (size_t)m->nv);
+    memcpy(s0, w->s, sizeof(double) * (size_t)m->nv);
+    sq_status st = SQ_OK;
+    double t = 1.0;
+    *E1 = HUGE_VAL;
+    for (*h = 0; *h < MAX_HALVINGS && st == SQ_OK; ++*h, t *= 0.5) {
+        st = place(face, m, w, p, s0, d, t, err);
+        if (st == SQ_OK && (*E1 = energy(m, target, eps)) < E) return SQ_OK;
+    }
+    memcpy(m->xy, p, sizeof(double) * 2 * (size_t)m->nv);
+    memcpy(w->s, s0, sizeof(double) * (size_t)m->nv);
+    return st;
+}
+
 /* One projected Newton step on the untangling energy at eps, from energy
  * *E, halved until it decreases (*E updated; unchanged when no step does).
  * d, p, s0: scratch of the sizes sq_quad_relax gives them. */
 static sq_status untangle_step(const cad_face *face, sq_relax_mesh *m, relax_work *w, double eps,
                                double *d, double *p, double *s0, double *E, sq_error *err)
 {
-    sq_status st = SQ_OK;
-    for (int i = 0; i < m->nv && st == SQ_OK; i++)
-        if (w->var[i] >= 0 && w->edge[i] >= 0)
-            st = qr_on_edge(face, w, i, &w->s[i], &m->xy[2 * i], &w->tan[2 * i], err);
-    double gd = 0.0;
-    int factored = 0;
+    double gd = 0.0, E1;
+    int factored = 0, h;
+    sq_status st = onto_edges(face, m, w, err);
     if (st == SQ_OK) st = newton_direction(m, w, 0, 0, NULL, eps, d, &gd, &factored, err);
     if (st != SQ_OK || !(gd < 0.0)) return st;
-    memcpy(p, m->xy, sizeof(double) * 2 * (size_t)m->nv);
-    memcpy(s0, w->s, sizeof(double) * (size_t)m->nv);
-    double t = 1.0;
-    for (int h = 0; h < MAX_HALVINGS && st == SQ_OK; h++, t *= 0.5) {
-        st = place(face, m, w, p, s0, d, t, err);
-        double E1 = st == SQ_OK ? energy(m, NULL, eps) : HUGE_VAL;
-        if (E1 < *E) {
-            *E = E1;
-            return st;
-        }
-    }
-    memcpy(m->xy, p, sizeof(double) * 2 * (size_t)m->nv);
-    memcpy(w->s, s0, sizeof(double) * (size_t)m->nv);
+    st = backtrack(face, m, w, d, NULL, eps, *E, p, s0, &E1, &h, err);
+    if (st == SQ_OK && h < MAX_HALVINGS) *E = E1;
     return st;
 }
 
@@ -885,28 +903,17 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
     double last_drop = HUGE_VAL;
     for (int it = 0; it < MAX_NEWTON && st == SQ_OK && w->ndof > 0 && E < HUGE_VAL; it++) {
         sq_progress_report(&m->progress, "relax", it, MAX_NEWTON);
-        for (int i = 0; i < m->nv && st == SQ_OK; i++)
-            if (w->var[i] >= 0 && w->edge[i] >= 0)
-                st = qr_on_edge(face, w, i, &w->s[i], &m->xy[2 * i], &w->tan[2 * i], err);
-        double gd = 0.0;
-        int factored = 0;
+        double gd = 0.0, E1;
+        int factored = 0, h;
+        st = onto_edges(face, m, w, err);
         if (st == SQ_OK) st = newton_direction(m, w, fresh, exact, target, 0.0, d, &gd, &factored, err);
         if (st != SQ_OK || (exact && !(gd < 0.0))) break; /* no exact step */
         fresh = 0;
         w->steps++;
-        memcpy(p, m->xy, sizeof(double) * 2 * (size_t)m->nv);
-        memcpy(s0, w->s, sizeof(double) * (size_t)m->nv);
-        double t = 1.0, E1 = HUGE_VAL;
-        int h = 0;
-        for (; h < MAX_HALVINGS && st == SQ_OK; h++, t *= 0.5) {
-            st = place(face, m, w, p, s0, d, t, err);
-            if (st == SQ_OK && (E1 = energy(m, target, 0.0)) < E) break;
-        }
+        st = backtrack(face, m, w, d, target, 0.0, E, p, s0, &E1, &h, err);
         /* no decrease left: converged, or an inexact direction, retried
-         * with a factorization */
+         * with a factorization (m is back where the step began) */
         if (st != SQ_OK || h == MAX_HALVINGS) {
-            memcpy(m->xy, p, sizeof(double) * 2 * (size_t)m->nv);
-            memcpy(w->s, s0, sizeof(double) * (size_t)m->nv);
             if (st == SQ_OK && !factored && !exact) {
                 fresh = 1;
                 continue;
