@@ -84,7 +84,7 @@ struct Edge {
     double start[2] = {0, 0}, end[2] = {0, 0}; // 2D end points in the direction of travel,
                                                // shared exactly with the neighbouring edges
     // start and end minus the curve's own ends (within the closure
-    // tolerance): eval_s blends them in along the edge so that its points
+    // tolerance): blend_gaps adds them in along the edge so that its points
     // run continuously into the shared corners
     double gap0[2] = {0, 0}, gap1[2] = {0, 0};
 };
@@ -712,25 +712,26 @@ static sq_status check_edge(const cad_face *face, int edge, const char *fn, sq_e
     return SQ_OK;
 }
 
-// The point at arc length s (direction of travel) of the curve at parameter
-// u: the curve's point plus its end gaps blended in linearly in s, exactly
-// the shared corners at both ends.  A file's curves may miss its vertices by
-// up to the closure tolerance; without the blend the edge would jump there,
-// and a chord halved towards the corner would never come close to it.
-static void edge_point(const cad_face *face, const Edge &e, double u, double s, double xy[2])
+static bool has_gap(const Edge &e)
+{
+    return e.gap0[0] != 0 || e.gap0[1] != 0 || e.gap1[0] != 0 || e.gap1[1] != 0;
+}
+
+// xy, the curve's point at arc length s (direction of travel), made the
+// edge's: its end gaps blended in linearly in s, exactly the shared corners
+// at both ends.  A file's curves may miss its vertices by up to the closure
+// tolerance; without the blend the edge would jump there, and a chord
+// halved towards the corner would never come close to it.
+static void blend_gaps(const Edge &e, double s, double xy[2])
 {
     if (s == 0) {
         xy[0] = e.start[0], xy[1] = e.start[1];
-        return;
-    }
-    if (s == e.length) {
+    } else if (s == e.length) {
         xy[0] = e.end[0], xy[1] = e.end[1];
-        return;
+    } else if (has_gap(e)) {
+        double t = s / e.length;
+        for (int d = 0; d < 2; ++d) xy[d] += (1 - t) * e.gap0[d] + t * e.gap1[d];
     }
-    face->eval_u(e, u, xy, nullptr, nullptr);
-    double t = s / e.length;
-    for (int d = 0; d < 2; ++d)
-        if (e.gap0[d] != 0 || e.gap1[d] != 0) xy[d] += (1 - t) * e.gap0[d] + t * e.gap1[d];
 }
 
 sq_status cad_face_edge_eval(const cad_face *face, int edge, double s, double xy[2],
@@ -744,9 +745,9 @@ sq_status cad_face_edge_eval(const cad_face *face, int edge, double s, double xy
                        e.length, edge);
     try {
         s = std::min(e.length, std::max(0.0, s));
-        double sf = e.reversed ? e.length - s : s, u = u_of_s(e, sf);
-        if (tangent || curvature) face->eval_u(e, u, nullptr, tangent, curvature);
-        if (xy) edge_point(face, e, u, s, xy);
+        double sf = e.reversed ? e.length - s : s;
+        face->eval_u(e, u_of_s(e, sf), xy, tangent, curvature);
+        if (xy) blend_gaps(e, s, xy);
         return SQ_OK;
     }
     SQCAD_CATCH(err)
@@ -884,10 +885,10 @@ sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2
         double st = std::min(e.length, std::max(0.0, e.reversed ? e.length - sf : sf));
         if (s) *s = st;
         double q[2];
-        edge_point(face, e, best_u, st, q);
+        face->eval_u(e, best_u, q, NULL, NULL);
+        blend_gaps(e, st, q);
         if (foot) foot[0] = q[0], foot[1] = q[1];
-        bool gap = e.gap0[0] != 0 || e.gap0[1] != 0 || e.gap1[0] != 0 || e.gap1[1] != 0;
-        if (dist) *dist = gap ? std::hypot(p[0] - q[0], p[1] - q[1]) : std::sqrt(best_d2);
+        if (dist) *dist = has_gap(e) ? std::hypot(p[0] - q[0], p[1] - q[1]) : std::sqrt(best_d2);
         return SQ_OK;
     }
     SQCAD_CATCH(err)

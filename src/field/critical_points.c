@@ -111,7 +111,7 @@ static int flag_element(const sem_field *f, int e, int S, const double *modes, d
                 best[1] = s;
             }
         }
-/* A root on a mesh vertex or edge leaves only round-off (CG) or the
+    /* A root on a mesh vertex or edge leaves only round-off (CG) or the
      * inter-element jump (DG) of sign change in some of the elements around
      * it: accept near-zero extremes. */
     return umin <= FLAG_TOL && umax >= -FLAG_TOL && vmin <= FLAG_TOL && vmax >= -FLAG_TOL;
