@@ -6,7 +6,9 @@
 # against.  python3-numpy is what tests/cascade_aerofoil.py interpolates its
 # B-splines with at build time and what the semquad Python package
 # (python/) returns its arrays in, python3-meshio what Mesh.to_meshio
-# converts to; t960 runs the package.  parallel (GNU parallel) runs batches
+# converts to; t960 runs the package.  python3-scipy's k-d tree is how
+# tests/msh_quad_stats.py and t645/t646 match nodes (not pulled in by the
+# others: a fresh Debian 12 has none).  parallel (GNU parallel) runs batches
 # on one machine: scripts/mesh_parallel.sh, t906 (docs/scale-out.md).
 # zlib1g-dev compresses the compressed Nektar++ XML (--binary with xml).
 # `--bench` adds what only benchmarks use, not the build or the tests:
@@ -22,7 +24,7 @@ libocct-data-exchange-dev \
 libcgal-dev libgmp-dev libmpfr-dev \
 libgsl-dev liblapacke-dev zlib1g-dev libopenblas-dev libopenblas-serial-dev libsuitesparse-dev \
 librsvg2-bin \
-python3-gmsh gmsh python3-numpy python3-meshio python3-vtk9 parallel"
+python3-gmsh gmsh python3-numpy python3-scipy python3-meshio python3-vtk9 parallel"
 case "${1:-}" in
     "") ;;
     --bench) PKGS="$PKGS $BENCH_PKGS" ;;
