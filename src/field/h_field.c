@@ -16,6 +16,7 @@ void sq_h_field_free(sq_h_field *h)
     if (!h) return;
     free(h->xy);
     free(h->c);
+    free(h->loop_flux);
     sem_field_evaluator_free(&h->ev);
     sem_poisson_free(&h->solver);
     sem_field_free(&h->hr);
@@ -234,15 +235,19 @@ static sq_status curvature_spans(const sem_locator *loc, const sem_tri_mesh *m, 
 }
 
 /* ∮ g and ∮ 1 over the mesh boundary (Gauss–Legendre on every boundary
- * element edge, exact geometry of the mesh). */
+ * element edge, exact geometry of the mesh), and both per boundary loop
+ * (lg, llen: nloops each). */
 static sq_status boundary_integral(const sem_locator *loc, const sem_tri_mesh *m, int nq, bdata *b,
-                                   double *ig, double *iabs, double *len, sq_error *err)
+                                   double *ig, double *iabs, double *len, double *lg,
+                                   double *llen, sq_error *err)
 {
     double t[64], w[64];
     SQ_TRY(sem_gauss_jacobi(nq, 0.0, 0.0, t, w, err));
     *ig = *iabs = *len = 0.0;
+    for (int l = 0; l < cad_face_num_loops(b->face); l++) lg[l] = llen[l] = 0.0;
     for (int h = 0; h < 3 * m->ntris; h++) {
         if (m->neigh[h] >= 0) continue;
+        const int l = cad_face_edge_loop(b->face, m->btag[h]);
         for (int q = 0; q < nq; q++) {
             double x[2], n[2], ds;
             edge_point(loc, h, 0.5 * (1.0 + t[q]), x, n, &ds);
@@ -250,6 +255,8 @@ static sq_status boundary_integral(const sem_locator *loc, const sem_tri_mesh *m
             *ig += wq * g;
             *iabs += wq * fabs(g);
             *len += wq;
+            lg[l] += wq * g;
+            llen[l] += wq;
         }
         SQ_TRY(b->st);
     }
@@ -307,10 +314,13 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
     out->npoints = npoints;
     out->xy = malloc(sizeof(double) * (2 * (size_t)npoints + 1));
     out->c = malloc(sizeof(double) * ((size_t)npoints + 1));
+    const int nl = cad_face_num_loops(face);
+    out->loop_flux = calloc((size_t)nl + 1, sizeof(double));
+    double *lg = malloc(sizeof(double) * (2 * (size_t)nl + 1)), *llen = lg ? lg + nl : NULL;
     sem_point_source *ps = malloc(sizeof *ps * ((size_t)info->nvertices + 1));
     sq_status st = SQ_OK;
     bdata b = {face, out, NULL, NULL, 0.0, SQ_OK, err};
-    if (!out->xy || !out->c || !ps) {
+    if (!out->xy || !out->c || !out->loop_flux || !lg || !ps) {
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
         goto done;
     }
@@ -334,6 +344,7 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
                 continue;
             const int k = h % 3;
             ps[nps] = (sem_point_source){h / 3, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0, s};
+            out->loop_flux[v->loop] += s;
             nps++;
             found = 1;
         }
@@ -347,11 +358,13 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
     out->ncorner_sources = nps;
     double ig, iabs, len;
     if ((st = curvature_spans(loc, mesh, order + 8, &b, err)) != SQ_OK ||
-        (st = boundary_integral(loc, mesh, order + 8, &b, &ig, &iabs, &len, err)) != SQ_OK)
+        (st = boundary_integral(loc, mesh, order + 8, &b, &ig, &iabs, &len, lg, llen, err)) !=
+            SQ_OK)
         goto done;
     out->imbalance = ig + ssum;
     out->data_size = iabs + sabs;
     b.gshift = out->imbalance / len; /* the quadrature residue, spread evenly */
+    for (int l = 0; l < nl; l++) out->loop_flux[l] += lg[l] - b.gshift * llen[l];
     if ((st = sem_poisson_create(mesh, order, SEM_CG, all_neumann, NULL, &out->solver, err)) !=
         SQ_OK)
         goto done;
@@ -379,6 +392,7 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
     out->shift = -mean;
 done:
     free(ps);
+    free(lg);
     free(b.span);
     free(b.first);
     if (st != SQ_OK) sq_h_field_free(out);

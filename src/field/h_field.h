@@ -39,6 +39,11 @@ typedef struct {
     sem_field *hr;           /* regular part H_r (zero mean) */
     sem_field_evaluator *ev; /* on hr */
     double shift;            /* constant in H (zero mean) */
+    /* per boundary loop: the outward flux of H_r through it, ∮ ∂H_r/∂ν + Σ s_i
+     * over the loop's edges and corners, of the data H_r was solved with
+     * (the residue's shift included); minus it is the period of H_r's
+     * conjugate around a hole (theta_field.h) */
+    double *loop_flux;
     double imbalance;        /* ∮ g + Σ s_i before correction (quadrature residue) */
     double data_size;        /* ∮ |g| + Σ |s_i| */
 } sq_h_field;
