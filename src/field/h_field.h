@@ -18,7 +18,8 @@
  *     the exact turning of the tangent over the edge spread evenly, so that
  *     ∮ κ_g is the exact total turning; the quadrature residue of the data
  *     (reported) is removed as a constant shift of the flux;
- *  3. a constant makes the mean of H zero. */
+ *  3. a constant makes the mean of H zero: H_r's is (the solver's), H_s's
+ *     is integrated on the boundary by the divergence theorem. */
 #ifndef SQ_H_FIELD_H
 #define SQ_H_FIELD_H
 
