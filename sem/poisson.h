@@ -45,6 +45,10 @@ typedef struct {
     void *g_ctx;
     int npoints;
     const sem_point_source *points;
+    /* nonzero: g's tag is the boundary half-edge 3 t + k (edge k of element
+     * t) instead of the mesh's btag, for data defined element by element
+     * (the θ field's: H_r's derivative in the edge's own element) */
+    int g_by_edge;
 } sem_poisson_data;
 
 typedef struct sem_poisson sem_poisson; /* opaque: assembled, factored */

@@ -583,7 +583,7 @@ static sq_status cg_dirichlet(const cg_state *c, const sem_poisson_data *data, d
                 const double *gxy = m->gxy + 2 * (size_t)m->nodes_per_tri * t;
                 const long *map = sp->bmap + (size_t)t * nb;
                 const signed char *sg = sp->bsign + (size_t)t * nb;
-                const int tag = m->btag[3 * t + k];
+                const int tag = data->g_by_edge ? 3 * t + k : m->btag[3 * t + k];
                 double rs[2], x[2], nrm[2], dsdt;
                 if (pass == 0) {
                     for (int e = 0; e < 2; ++e) {
@@ -661,7 +661,7 @@ static sq_status cg_solve(void *state, const sem_poisson_data *data, sem_field *
         if (!data->g) continue;
         for (int k = 0; k < 3; ++k) {
             if (c->bc_kind[3 * t + k] != SEM_BC_NEUMANN) continue;
-            const int tag = m->btag[3 * t + k];
+            const int tag = data->g_by_edge ? 3 * t + k : m->btag[3 * t + k];
             for (int q = 0; q < c->nqe; ++q) {
                 double rs[2], x[2], nrm[2], dsdt;
                 cg_edge_geom(c, gxy, k, q, rs, x, nrm, &dsdt);

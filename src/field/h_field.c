@@ -344,7 +344,7 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
         goto done;
     out->ndofs = sem_poisson_ndofs(out->solver);
     if ((st = sem_field_create(mesh, order, 1, &out->hr, err)) != SQ_OK) goto done;
-    sem_poisson_data data = {NULL, NULL, hr_flux, &b, nps, ps};
+    sem_poisson_data data = {NULL, NULL, hr_flux, &b, nps, ps, 0};
     if ((st = sem_poisson_solve(out->solver, &data, out->hr, err)) != SQ_OK) {
         /* the solver's own quadrature of the data found them unbalanced:
          * a property of this pattern on this face, not a usage error */

@@ -53,22 +53,24 @@ double sq_theta_field_eval_ref(const sq_theta_field *t, int e, double r, double 
 
 typedef struct {
     const sq_theta_field *t;
-    int elem; /* the element of the last boundary point: the next one's hint */
+    const sem_locator *loc;
     int fail;
 } tdata;
 
-/* ∂θ_r'/∂ν on the boundary: (n × ∇H_r)·ν, the tangential derivative of
- * H_r, minus the normal derivative of the holes' arg terms */
+/* ∂θ_r'/∂ν on boundary edge tag = 3 e + k (sem_poisson_data.g_by_edge):
+ * (n × ∇H_r)·ν, the tangential derivative of H_r in the edge's own element
+ * (its integral along the boundary telescopes to zero), minus the normal
+ * derivative of the holes' arg terms */
 static double tr_flux(const double x[2], const double n[2], int tag, void *ctx)
 {
-    (void)tag;
     tdata *d = ctx;
     const sq_theta_field *t = d->t;
-    double v, g[2];
-    if (sem_field_evaluator_eval(t->h->ev, x, &d->elem, &v, g)) {
+    double rs[2], v, g[2];
+    if (sem_locator_invert(d->loc, tag / 3, x, rs)) {
         d->fail = 1;
         return 0.0;
     }
+    sem_field_evaluator_eval_ref(t->h->ev, tag / 3, rs[0], rs[1], &v, g, NULL);
     double flux = -g[1] * n[0] + g[0] * n[1];
     for (int j = t->h->npoints; j < t->narg; j++) {
         const double dx = x[0] - t->axy[2 * j], dy = x[1] - t->axy[2 * j + 1];
@@ -237,11 +239,11 @@ sq_status sq_theta_field_solve(const cad_face *face, const sem_tri_mesh *mesh,
     /* step 3: θ_r' with H's factor (the same operator, the same space) */
     out->ndofs = sem_poisson_ndofs(h->solver);
     if ((st = sem_field_create(mesh, h->order, 1, &out->tr, err)) != SQ_OK) goto done;
-    tdata d = {out, -1, 0};
-    sem_poisson_data data = {NULL, NULL, tr_flux, &d, 0, NULL};
+    tdata d = {out, loc, 0};
+    sem_poisson_data data = {NULL, NULL, tr_flux, &d, 0, NULL, 1};
     if ((st = sem_poisson_solve(h->solver, &data, out->tr, err)) != SQ_OK) goto done;
     if (d.fail) {
-        st = SQ_FAIL(err, SQ_ERR_INTERNAL, "theta: a boundary point is outside the mesh");
+        st = SQ_FAIL(err, SQ_ERR_INTERNAL, "theta: a boundary point left its element");
         goto done;
     }
     if ((st = sem_field_evaluator_create(out->tr, loc, &out->ev, err)) != SQ_OK) goto done;
