@@ -15,11 +15,53 @@
  * 2 ‖∇H_h − ∇H‖ + 1e-12.  The period is the arg term's, the flux of H's
  * data through the hole (∮ κ = 2π on the order-8 geometry: 1e-10).
  * Cauchy–Riemann residual |∇θ_h − n × ∇H_h| ≤ both errors pointwise: its
- * RMS under the sum of the two RMS errors.  One factorization in all. */
+ * RMS under the sum of the two RMS errors.  One factorization in all.
+ *
+ * On square_hole.step with its natural pattern (four valence-5 points and
+ * a hole) the jumps of θ across the cut are the arg terms' (θ_r' is
+ * continuous): −π/2 around each point to round-off — θ on either side of
+ * a cut edge is evaluated at its midpoint as placed by two elements' maps,
+ * equal to 1e-16, where the spoke grading puts the midpoints about 1e-4
+ * from the point and θ_s changes by 1/(4r) ≈ 3e3 per unit length: 1e-12
+ * per edge, bound 1e-10 — and around the hole its period from H's data,
+ * which Gauss–Bonnet makes the expected −(∮ κ_g + Σ s_i) = 2π to the
+ * data's quadrature (1e-10). */
 #include "htheta_field.h"
 #include "test_face.h"
 
 #include <gsl/gsl_errno.h>
+
+static int square_hole(void)
+{
+    sq_error err;
+    cad_model *m = NULL;
+    cad_face *f = NULL;
+    sq_test_open_face("square_hole.step", &m, &f);
+    sq_field_options fo;
+    sq_field_options_default(&fo);
+    sq_field_analysis an;
+    SQ_TEST_OK(sq_field_analyse(f, &fo, &an, &err), err);
+    sq_pattern p;
+    SQ_TEST_OK(sq_pattern_from_analysis(f, &an, &p, &err), err);
+    sq_field_analysis_free(&an);
+    sq_htheta_options o;
+    sq_htheta_options_default(&o);
+    sq_htheta ht;
+    SQ_TEST_OK(sq_htheta_compute(f, &p, &o, &ht, &err), err);
+    int fails = sq_check_int("square_hole", "points", ht.npoints, 4);
+    for (int j = 0; j < ht.npoints; j++)
+        fails += sq_check_abs("square_hole", "jump around a valence-5 point", ht.points[j].jump,
+                              -M_PI_2, 1e-10);
+    fails += sq_check_abs("square_hole", "jump around the hole", ht.loops[1].jump,
+                          ht.loops[1].expected_jump, 1e-10);
+    fails += sq_check_abs("square_hole", "expected jump", ht.loops[1].expected_jump, 2.0 * M_PI,
+                          1e-10);
+    sq_htheta_free(&ht);
+    sq_pattern_free(&p);
+    cad_face_free(&f);
+    cad_model_free(&m);
+    return fails;
+}
 
 int main(void)
 {
@@ -73,6 +115,7 @@ int main(void)
     sq_htheta_free(&ht);
     cad_face_free(&f);
     cad_model_free(&m);
+    fails += square_hole();
     if (fails) printf("t711: %d failure(s)\n", fails);
     return fails ? 1 : 0;
 }
