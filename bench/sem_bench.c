@@ -83,7 +83,7 @@ static measure run_child(const sem_tri_mesh *mesh, int P, sem_method meth, int r
             r.ok = sem_poisson_create(mesh, P, meth, NULL, NULL, &s, &err) == SQ_OK;
             double t1 = now_s();
             r.ok = r.ok && sem_field_create(mesh, P, 1, &u, &err) == SQ_OK;
-            sem_poisson_data d = {NULL, NULL, bnd, NULL, 0, NULL};
+            sem_poisson_data d = {NULL, NULL, bnd, NULL, 0, NULL, 0};
             double t2 = now_s();
             r.ok = r.ok && sem_poisson_solve(s, &d, u, &err) == SQ_OK;
             double t3 = now_s();
@@ -141,7 +141,7 @@ static void eval_cost(const sem_tri_mesh *mesh, int P, double out[3], long *dofs
     if (sem_poisson_create(mesh, P, SEM_CG, NULL, NULL, &s, &err) ||
         sem_field_create(mesh, P, 1, &u, &err))
         return;
-    sem_poisson_data d = {NULL, NULL, bnd, NULL, 0, NULL};
+    sem_poisson_data d = {NULL, NULL, bnd, NULL, 0, NULL, 0};
     if (sem_poisson_solve(s, &d, u, &err) || sem_field_evaluator_create(u, NULL, &ev, &err))
         return;
     *dofs = sem_poisson_ndofs(s);

@@ -43,34 +43,6 @@ sq_status sem_poisson_create(const sem_tri_mesh *mesh, int P, sem_method method,
     return SQ_OK;
 }
 
-sq_status sem_poisson_create_like(sem_poisson **src, const sem_tri_mesh *mesh,
-                                  sem_bc_kind_fn kind, void *kind_ctx, sem_poisson **out,
-                                  sq_error *err)
-{
-    if (!out) return SQ_FAIL(err, SQ_ERR_USAGE, "poisson_create_like: NULL output");
-    *out = NULL;
-    if (!src || !*src || (*src)->method != SEM_CG)
-        return SQ_FAIL(err, SQ_ERR_USAGE, "poisson_create_like: needs a CG solver");
-    if (!sem_tri_mesh_same_elements(mesh, (*src)->mesh))
-        return SQ_FAIL(err, SQ_ERR_USAGE,
-                       "poisson_create_like: the mesh does not have the solver's elements");
-    sem_poisson *p = calloc(1, sizeof *p);
-    if (!p) return SQ_FAIL(err, SQ_ERR_INTERNAL, "poisson_create_like: out of memory");
-    p->mesh = mesh;
-    p->P = (*src)->P;
-    p->method = SEM_CG;
-    sq_status st =
-        sem_poisson_cg_create_like((*src)->state, mesh, kind, kind_ctx, &p->ops, &p->state, err);
-    free(*src); /* its state went to the new solver or was freed */
-    *src = NULL;
-    if (st != SQ_OK) {
-        free(p);
-        return st;
-    }
-    *out = p;
-    return SQ_OK;
-}
-
 void sem_poisson_free(sem_poisson **s)
 {
     if (!s || !*s) return;

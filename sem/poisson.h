@@ -45,13 +45,16 @@ typedef struct {
     void *g_ctx;
     int npoints;
     const sem_point_source *points;
+    /* nonzero: g's tag is the boundary half-edge 3 t + k (edge k of element
+     * t) instead of the mesh's btag, for data defined element by element
+     * (the θ field's: H_r's derivative in the edge's own element) */
+    int g_by_edge;
 } sem_poisson_data;
 
 typedef struct sem_poisson sem_poisson; /* opaque: assembled, factored */
 
 /* The work a solver's creation did, counted where it was done: element
- * stiffness matrices computed (none when copied: sem_poisson_create_like)
- * and sparse factorizations (none for a system without free unknowns). */
+ * stiffness matrices computed and sparse factorizations (none for a system without free unknowns). */
 typedef struct {
     long element_matrices;
     int factorizations;
@@ -62,19 +65,6 @@ typedef struct {
 sq_status sem_poisson_create(const sem_tri_mesh *mesh, int P, sem_method method,
                              sem_bc_kind_fn kind, void *kind_ctx, sem_poisson **out,
                              sq_error *err);
-/* A CG solver of src's order on mesh, a mesh with src's elements (the same
- * number, geometry nodes and local vertex order: src's mesh cut open along
- * edges, tri_mesh_cut.h) but its own connectivity and boundary: *src's
- * element matrices and reference tables are taken over (not copied: θ's
- * solver is made when H's has solved), only the numbering, the assembly
- * and the factorization are new (the θ field of Jezdimirović 2021 eq. 15 on
- * the H field's mesh cut along the branch cut).  The same system, to the
- * bit, as sem_poisson_create on mesh.  *src is freed and NULLed, whatever
- * the outcome, except for SQ_ERR_USAGE (src DG or NULL, or mesh with other
- * elements: *src untouched). */
-sq_status sem_poisson_create_like(sem_poisson **src, const sem_tri_mesh *mesh,
-                                  sem_bc_kind_fn kind, void *kind_ctx, sem_poisson **out,
-                                  sq_error *err);
 void sem_poisson_free(sem_poisson **s); /* NULL-safe, NULLs *s */
 
 /* Number of global unknowns (after static condensation for CG, the global

@@ -626,7 +626,7 @@ static sq_status dg_solve(void *state, const sem_poisson_data *data, sem_field *
     if (data && data->g) {
         for (int ib = 0; ib < S->nb; ++ib) {
             const int e = S->bface[2 * ib], k = S->bface[2 * ib + 1];
-            const int tag = mesh->btag[3 * e + k];
+            const int tag = data->g_by_edge ? 3 * e + k : mesh->btag[3 * e + k];
             const double *bx = S->bx + 5 * (size_t)ne * ib;
             const double *phi = S->bphi + (size_t)ne * nm * ib, *dn = S->bdn + (size_t)ne * nm * ib;
             double *be = b + (size_t)e * nm;

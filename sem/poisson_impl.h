@@ -20,10 +20,5 @@ sq_status sem_poisson_cg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn 
 sq_status sem_poisson_dg_create(const sem_tri_mesh *mesh, int P, sem_bc_kind_fn kind,
                                 void *kind_ctx, const sem_poisson_ops **ops, void **state,
                                 sq_error *err);
-/* CG on a mesh with src_state's elements (checked by the caller), taking
- * their matrices and tables; src_state is freed (sem_poisson_create_like). */
-sq_status sem_poisson_cg_create_like(void *src_state, const sem_tri_mesh *mesh,
-                                     sem_bc_kind_fn kind, void *kind_ctx,
-                                     const sem_poisson_ops **ops, void **state, sq_error *err);
 
 #endif

@@ -1,4 +1,4 @@
-/* semquad sem/ — cutting a mesh open along marked edges. */
+/* semquad sem/ — gluing a mesh along pairs of its boundary edges. */
 #include "tri_mesh_cut.h"
 
 #include <stdlib.h>
@@ -8,82 +8,6 @@ static int uf_find(int *parent, int i)
 {
     while (parent[i] != i) i = parent[i] = parent[parent[i]];
     return i;
-}
-
-sq_status sem_tri_mesh_cut(const sem_tri_mesh *m, const unsigned char *cut, int cut_tag,
-                           sem_tri_mesh **out, int **vert_orig, sq_error *err)
-{
-    if (!out || !m || !cut) return SQ_FAIL(err, SQ_ERR_USAGE, "tri_mesh_cut: NULL argument");
-    *out = NULL;
-    if (vert_orig) *vert_orig = NULL;
-    const int nt = m->ntris;
-    const size_t nc = 3 * (size_t)nt; /* corner slots 3*t + k (vertex k of t) */
-    int *parent = malloc((nc + 1) * sizeof *parent);
-    int *newid = malloc((nc + 1) * sizeof *newid);
-    unsigned char *isc = calloc(nc + 1, 1);
-    if (!parent || !newid || !isc) {
-        free(parent);
-        free(newid);
-        free(isc);
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "tri_mesh_cut: out of memory");
-    }
-    for (size_t h = 0; h < nc; ++h) {
-        parent[h] = (int)h;
-        const int nb = m->neigh[h];
-        if (nb >= 0 && cut[h]) {
-            isc[h] = 1;
-            for (int j = 0; j < 3; ++j)
-                if (m->neigh[3 * nb + j] == (int)(h / 3)) isc[3 * nb + j] = 1;
-        }
-    }
-    /* join the corner slots of the shared vertices across every uncut edge */
-    for (int t = 0; t < nt; ++t)
-        for (int k = 0; k < 3; ++k) {
-            const int nb = m->neigh[3 * t + k];
-            if (nb < 0 || isc[3 * t + k]) continue;
-            for (int e = 0; e < 2; ++e) {
-                const int v = m->tri[3 * t + (k + e) % 3];
-                for (int j = 0; j < 3; ++j)
-                    if (m->tri[3 * nb + j] == v) {
-                        int a = uf_find(parent, 3 * t + (k + e) % 3), b = uf_find(parent, 3 * nb + j);
-                        if (a != b) parent[a] = b;
-                    }
-            }
-        }
-    int nv = 0;
-    for (size_t h = 0; h < nc; ++h) newid[h] = -1;
-    for (size_t h = 0; h < nc; ++h) {
-        const int r = uf_find(parent, (int)h);
-        if (newid[r] < 0) newid[r] = nv++;
-    }
-    sem_tri_mesh *c = NULL;
-    sq_status st = sem_tri_mesh_create(m->order, nv, nt, &c, err);
-    int *orig = st == SQ_OK ? malloc(((size_t)nv + 1) * sizeof *orig) : NULL;
-    if (st == SQ_OK && !orig) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "tri_mesh_cut: out of memory");
-    if (st == SQ_OK) {
-        for (size_t h = 0; h < nc; ++h) {
-            const int id = newid[uf_find(parent, (int)h)], v = m->tri[h];
-            c->tri[h] = id;
-            orig[id] = v;
-            c->vxy[2 * id] = m->vxy[2 * v];
-            c->vxy[2 * id + 1] = m->vxy[2 * v + 1];
-            c->neigh[h] = isc[h] ? -1 : m->neigh[h];
-            c->btag[h] = isc[h] ? cut_tag : m->btag[h];
-        }
-        memcpy(c->gxy, m->gxy, sizeof(double) * 2 * (size_t)m->nodes_per_tri * (size_t)nt);
-    }
-    free(parent);
-    free(newid);
-    free(isc);
-    if (st != SQ_OK) {
-        sem_tri_mesh_free(&c);
-        free(orig);
-        return st;
-    }
-    *out = c;
-    if (vert_orig) *vert_orig = orig;
-    else free(orig);
-    return SQ_OK;
 }
 
 sq_status sem_tri_mesh_glue(const sem_tri_mesh *m, int npairs, const int *pairs,

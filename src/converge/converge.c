@@ -111,7 +111,7 @@ static sq_status one_run(const sq_triangulation *t, sem_method method, int P, se
     sq_status st = sem_poisson_create(t->mesh, P, method, NULL, NULL, &s, err);
     if (st == SQ_OK) st = sem_field_create(t->mesh, P, 1, &u, err);
     if (st == SQ_OK) {
-        sem_poisson_data d = {NULL, NULL, boundary_value, &fn, 0, NULL};
+        sem_poisson_data d = {NULL, NULL, boundary_value, &fn, 0, NULL, 0};
         st = sem_poisson_solve(s, &d, u, err);
     }
     run->seconds = now_s() - t0;

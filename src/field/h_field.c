@@ -1,10 +1,7 @@
 #include "h_field.h"
 
-#include "dg_modal.h"
 #include "gauss.h"
 #include "poisson.h"
-#include "tri_nodes.h"
-#include "tri_quad.h"
 
 #include <math.h>
 #include <stdio.h>
@@ -16,6 +13,7 @@ void sq_h_field_free(sq_h_field *h)
     if (!h) return;
     free(h->xy);
     free(h->c);
+    free(h->loop_flux);
     sem_field_evaluator_free(&h->ev);
     sem_poisson_free(&h->solver);
     sem_field_free(&h->hr);
@@ -233,66 +231,50 @@ static sq_status curvature_spans(const sem_locator *loc, const sem_tri_mesh *m, 
     return SQ_OK;
 }
 
-/* ∮ g and ∮ 1 over the mesh boundary (Gauss–Legendre on every boundary
- * element edge, exact geometry of the mesh). */
+/* Integrals over the mesh boundary (Gauss–Legendre on every boundary
+ * element edge, exact geometry of the mesh): of the data g, |g| and 1, of
+ * g and 1 per boundary loop (lg, llen: nloops each), and the face's
+ * integrals of H_s and 1 by the divergence theorem (Δ ln r = 0 away from
+ * the points): ∫ ln|x − X| dA = ∮ (2 ln r − 1)/4 (x − X)·ν ds, the field
+ * r (2 ln r − 1)/4 e_r vanishing at X, and ∫ 1 dA = ∮ (x − o)·ν / 2 ds.
+ * The integrands are smooth on the boundary (the points are inside, the
+ * triangulation graded towards them), where a volume rule meets ln r's
+ * singularity at the vertex X. */
+typedef struct {
+    double ig, iabs, len, ihs, area;
+    double *lg, *llen;
+} bsums;
+
 static sq_status boundary_integral(const sem_locator *loc, const sem_tri_mesh *m, int nq, bdata *b,
-                                   double *ig, double *iabs, double *len, sq_error *err)
+                                   bsums *S, sq_error *err)
 {
+    const sq_h_field *hf = b->h;
     double t[64], w[64];
     SQ_TRY(sem_gauss_jacobi(nq, 0.0, 0.0, t, w, err));
-    *ig = *iabs = *len = 0.0;
+    S->ig = S->iabs = S->len = S->ihs = S->area = 0.0;
+    for (int l = 0; l < cad_face_num_loops(b->face); l++) S->lg[l] = S->llen[l] = 0.0;
+    const double o[2] = {m->vxy[0], m->vxy[1]}; /* the area's origin: on the face */
     for (int h = 0; h < 3 * m->ntris; h++) {
         if (m->neigh[h] >= 0) continue;
+        const int l = cad_face_edge_loop(b->face, m->btag[h]);
         for (int q = 0; q < nq; q++) {
             double x[2], n[2], ds;
             edge_point(loc, h, 0.5 * (1.0 + t[q]), x, n, &ds);
             const double g = hr_flux(x, n, m->btag[h], b), wq = 0.5 * w[q] * ds;
-            *ig += wq * g;
-            *iabs += wq * fabs(g);
-            *len += wq;
+            S->ig += wq * g;
+            S->iabs += wq * fabs(g);
+            S->len += wq;
+            S->lg[l] += wq * g;
+            S->llen[l] += wq;
+            S->area += 0.5 * wq * ((x[0] - o[0]) * n[0] + (x[1] - o[1]) * n[1]);
+            for (int j = 0; j < hf->npoints; j++) {
+                const double dx = x[0] - hf->xy[2 * j], dy = x[1] - hf->xy[2 * j + 1];
+                S->ihs += wq * hf->c[j] / (2.0 * M_PI) * 0.25 * (log(dx * dx + dy * dy) - 1.0) *
+                          (dx * n[0] + dy * n[1]);
+            }
         }
         SQ_TRY(b->st);
     }
-    return SQ_OK;
-}
-
-/* The mean of H_s over the mesh, by a rule of degree 2P + 4 on every
- * element's map: sem_locator_map's, with the geometry's modes tabulated
- * once per point of the rule instead of at every element (the same sums
- * in the same order). */
-static sq_status singular_mean(const sq_h_field *h, const sem_locator *loc, double *mean,
-                               sq_error *err)
-{
-    const sem_tri_mesh *mesh = h->mesh;
-    const int ng = sem_tri_num_nodes(mesh->order);
-    sem_tri_quad *quad = NULL;
-    SQ_TRY(sem_tri_quad_create(2 * h->order + 4, &quad, err));
-    const int nq = quad->npts;
-    double *phi = malloc(sizeof(double) * 3 * (size_t)nq * ng);
-    if (!phi) {
-        sem_tri_quad_free(&quad);
-        return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    }
-    double *dr = phi + (size_t)nq * ng, *ds = dr + (size_t)nq * ng;
-    sem_dubiner_tab tab;
-    sem_dubiner_tab_init(&tab, mesh->order);
-    for (int q = 0; q < nq; q++)
-        sem_dubiner_tab_eval(&tab, quad->rs[2 * q], quad->rs[2 * q + 1], phi + (size_t)q * ng,
-                             dr + (size_t)q * ng, ds + (size_t)q * ng);
-    const double *gm = sem_locator_modal_geometry(loc);
-    double ihs = 0.0, area = 0.0;
-    for (int e = 0; e < mesh->ntris; e++)
-        for (int q = 0; q < nq; q++) {
-            double x[2];
-            const size_t o = (size_t)q * ng;
-            const double det =
-                sem_modal_map(ng, gm + 2 * (size_t)ng * e, phi + o, dr + o, ds + o, x, NULL);
-            ihs += quad->w[q] * det * sq_h_singular(h, x, NULL);
-            area += quad->w[q] * det;
-        }
-    *mean = ihs / area;
-    free(phi);
-    sem_tri_quad_free(&quad);
     return SQ_OK;
 }
 
@@ -307,10 +289,13 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
     out->npoints = npoints;
     out->xy = malloc(sizeof(double) * (2 * (size_t)npoints + 1));
     out->c = malloc(sizeof(double) * ((size_t)npoints + 1));
+    const int nl = cad_face_num_loops(face);
+    out->loop_flux = calloc((size_t)nl + 1, sizeof(double));
+    double *lg = malloc(sizeof(double) * (2 * (size_t)nl + 1)), *llen = lg ? lg + nl : NULL;
     sem_point_source *ps = malloc(sizeof *ps * ((size_t)info->nvertices + 1));
     sq_status st = SQ_OK;
     bdata b = {face, out, NULL, NULL, 0.0, SQ_OK, err};
-    if (!out->xy || !out->c || !ps) {
+    if (!out->xy || !out->c || !out->loop_flux || !lg || !ps) {
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
         goto done;
     }
@@ -334,6 +319,7 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
                 continue;
             const int k = h % 3;
             ps[nps] = (sem_point_source){h / 3, k == 1 ? 1.0 : 0.0, k == 2 ? 1.0 : 0.0, s};
+            out->loop_flux[v->loop] += s;
             nps++;
             found = 1;
         }
@@ -345,19 +331,20 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
         sabs += fabs(s);
     }
     out->ncorner_sources = nps;
-    double ig, iabs, len;
+    bsums S = {0.0, 0.0, 0.0, 0.0, 0.0, lg, llen};
     if ((st = curvature_spans(loc, mesh, order + 8, &b, err)) != SQ_OK ||
-        (st = boundary_integral(loc, mesh, order + 8, &b, &ig, &iabs, &len, err)) != SQ_OK)
+        (st = boundary_integral(loc, mesh, order + 8, &b, &S, err)) != SQ_OK)
         goto done;
-    out->imbalance = ig + ssum;
-    out->data_size = iabs + sabs;
-    b.gshift = out->imbalance / len; /* the quadrature residue, spread evenly */
+    out->imbalance = S.ig + ssum;
+    out->data_size = S.iabs + sabs;
+    b.gshift = out->imbalance / S.len; /* the quadrature residue, spread evenly */
+    for (int l = 0; l < nl; l++) out->loop_flux[l] += lg[l] - b.gshift * llen[l];
     if ((st = sem_poisson_create(mesh, order, SEM_CG, all_neumann, NULL, &out->solver, err)) !=
         SQ_OK)
         goto done;
     out->ndofs = sem_poisson_ndofs(out->solver);
     if ((st = sem_field_create(mesh, order, 1, &out->hr, err)) != SQ_OK) goto done;
-    sem_poisson_data data = {NULL, NULL, hr_flux, &b, nps, ps};
+    sem_poisson_data data = {NULL, NULL, hr_flux, &b, nps, ps, 0};
     if ((st = sem_poisson_solve(out->solver, &data, out->hr, err)) != SQ_OK) {
         /* the solver's own quadrature of the data found them unbalanced:
          * a property of this pattern on this face, not a usage error */
@@ -374,11 +361,10 @@ sq_status sq_h_field_solve(const cad_face *face, const sq_face_info *info,
     if ((st = b.st) != SQ_OK) goto done;
     if ((st = sem_field_evaluator_create(out->hr, loc, &out->ev, err)) != SQ_OK) goto done;
     /* zero mean of H = H_s + H_r (H_r has zero mean already) */
-    double mean;
-    if ((st = singular_mean(out, loc, &mean, err)) != SQ_OK) goto done;
-    out->shift = -mean;
+    out->shift = -S.ihs / S.area;
 done:
     free(ps);
+    free(lg);
     free(b.span);
     free(b.first);
     if (st != SQ_OK) sq_h_field_free(out);

@@ -18,7 +18,8 @@
  *     the exact turning of the tangent over the edge spread evenly, so that
  *     ∮ κ_g is the exact total turning; the quadrature residue of the data
  *     (reported) is removed as a constant shift of the flux;
- *  3. a constant makes the mean of H zero. */
+ *  3. a constant makes the mean of H zero: H_r's is (the solver's), H_s's
+ *     is integrated on the boundary by the divergence theorem. */
 #ifndef SQ_H_FIELD_H
 #define SQ_H_FIELD_H
 
@@ -39,6 +40,11 @@ typedef struct {
     sem_field *hr;           /* regular part H_r (zero mean) */
     sem_field_evaluator *ev; /* on hr */
     double shift;            /* constant in H (zero mean) */
+    /* per boundary loop: the outward flux of H_r through it, ∮ ∂H_r/∂ν + Σ s_i
+     * over the loop's edges and corners, of the data H_r was solved with
+     * (the residue's shift included); minus it is the period of H_r's
+     * conjugate around a hole (theta_field.h) */
+    double *loop_flux;
     double imbalance;        /* ∮ g + Σ s_i before correction (quadrature residue) */
     double data_size;        /* ∮ |g| + Σ |s_i| */
 } sq_h_field;

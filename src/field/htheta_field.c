@@ -236,13 +236,12 @@ sq_status sq_htheta_compute(const cad_face *face, const sq_pattern *pattern,
     if ((st = sq_h_field_solve(face, &out->info, m, out->loc, opt->order, np, pxy, val,
                                out->balance.quads, &out->h, err)) != SQ_OK)
         goto done;
-    const sem_poisson_work wh = sem_poisson_work_done(out->h.solver);
-    /* θ's solver takes H's element matrices and frees the rest */
-    if ((st = sq_theta_field_solve(face, m, out->loc, &out->h, out->vloops, out->nloops, sing,
-                                   &out->theta, err)) != SQ_OK)
-        goto done;
-    out->work = (sem_poisson_work){wh.element_matrices + out->theta.work.element_matrices,
-                                   wh.factorizations + out->theta.work.factorizations};
+    out->work = sem_poisson_work_done(out->h.solver);
+    /* θ solves with H's factor */
+    st = sq_theta_field_solve(face, m, out->loc, &out->h, out->vloops, out->nloops, sing,
+                              &out->theta, err);
+    sem_poisson_free(&out->h.solver);
+    if (st != SQ_OK) goto done;
     for (int j = 0; j < np; j++)
         out->points[j].jump = sq_theta_jump_around_vertex(&out->theta, sing[j]);
     st = loop_checks(face, out, err);

@@ -66,8 +66,8 @@ typedef struct {
     sq_htheta_loop *loops;
     double align_tol; /* rad */
     double t_triangulate, t_solve;
-    /* H's and θ's solvers together: θ's copies H's element matrices, so
-     * one matrix per triangle and two factorizations */
+    /* H's solver, which θ solves with too: one matrix per triangle and
+     * one factorization */
     sem_poisson_work work;
 } sq_htheta;
 
