@@ -13,7 +13,8 @@
  *  3. merge roots found more than once (shared edges and vertices) or
  *     closer than 1e-2 of the element size (round-off splits a zero of
  *     multiplicity m into m roots, and Newton converges only linearly to
- *     it: an iterate at the round-off floor of (u, v) is accepted); roots
+ *     it: an iterate at the round-off floor of (u, v) is accepted, Newton
+ *     stopping there once a step no longer halves |(u, v)|); roots
  *     closer to each other than 0.05 x their distance to the boundary are
  *     one point at their mean (the discretization error splits a multiple
  *     zero too: the disc's z^4 into four roots 0.01 apart at P = 4), its
