@@ -16,6 +16,12 @@
  * multiplicity m and then wanders at the round-off floor of (u, v): an
  * iterate with |(u, v)| below STALL_RES counts as converged. */
 #define STALL_RES 1e-13
+/* Near a zero of multiplicity m (w ≈ c z^m) a Newton step multiplies |w|
+ * by ((m-1)/m)^m: 0 for a simple zero, at most 1/e for any m.  Below
+ * STALL_RES, a step that does not take |w| under STALL_GAIN x the least so
+ * far gains nothing but round-off: Newton stops at that least iterate (it
+ * used to wander there to NEWTON_MAX_IT, ~100 evaluations per start). */
+#define STALL_GAIN 0.5
 /* Roots closer than this (times the element size) are one zero: under
  * round-off a zero of multiplicity m splits into up to m roots about
  * (round-off)^(1/m) apart (1e-4 of the element size for m = 4). */
@@ -117,16 +123,17 @@ static int flag_element(const sem_field *f, int e, int S, const double *modes, d
     return umin <= FLAG_TOL && umax >= -FLAG_TOL && vmin <= FLAG_TOL && vmax >= -FLAG_TOL;
 }
 
-/* Newton on element e's own polynomial from (r, s), iterates allowed to
- * leave the element (the polynomial and the map extend smoothly).
- * Returns 0 on convergence. */
-static int newton_local(const sem_field *f, int e, double *r, double *s)
+/* Iterates may leave the element: the polynomial and the map extend
+ * smoothly. */
+int sq_field_newton_local(const sem_field *f, int e, double *r, double *s, int *evals)
 {
     double best = HUGE_VAL, br = *r, bs = *s;
     for (int it = 0; it < NEWTON_MAX_IT; it++) {
         double uv[2], dr[2], ds[2];
         sem_field_eval_ref(f, e, *r, *s, uv, dr, ds);
+        if (evals) ++*evals;
         double res = hypot(uv[0], uv[1]);
+        if (best < STALL_RES && !(res < STALL_GAIN * best)) break;
         if (res < best) best = res, br = *r, bs = *s;
         double det = dr[0] * ds[1] - ds[0] * dr[1];
         if (det == 0.0 || !isfinite(det)) break;
@@ -166,7 +173,7 @@ static int newton(const sq_guiding_field *g, int e, double r, double s, int *eo,
     double bmargin = DG_EDGE_MARGIN, br = 0.0, bs = 0.0;
     for (int hop = 0; hop <= NEWTON_MAX_HOPS; hop++) {
         seen[nseen++] = e;
-        if (newton_local(g->uv, e, &r, &s)) return 1;
+        if (sq_field_newton_local(g->uv, e, &r, &s, NULL)) return 1;
         double margin = fmax(fmax(-r, -s), r + s - 1.0);
         if (margin <= DG_MARGIN) {
             double uv[2];

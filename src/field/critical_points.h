@@ -13,7 +13,8 @@
  *  3. merge roots found more than once (shared edges and vertices) or
  *     closer than 1e-2 of the element size (round-off splits a zero of
  *     multiplicity m into m roots, and Newton converges only linearly to
- *     it: an iterate at the round-off floor of (u, v) is accepted); roots
+ *     it: an iterate at the round-off floor of (u, v) is accepted, Newton
+ *     stopping there once a step no longer halves |(u, v)|); roots
  *     closer to each other than 0.05 x their distance to the boundary are
  *     one point at their mean (the discretization error splits a multiple
  *     zero too: the disc's z^4 into four roots 0.01 apart at P = 4), its
@@ -51,6 +52,14 @@ typedef struct {
 
 sq_status sq_critical_points_find(const sq_guiding_field *g, const cad_face *face,
                                   sq_critical_point **pts, int *npts, sq_error *err);
+
+/* Newton on (u, v) = 0 on element e's own polynomial from (r, s) (step 2
+ * above; iterates may leave the element): a step below 1e-14, else the
+ * least |(u, v)| once it is below 1e-13 and a step fails to halve it (no
+ * gain but round-off: near a zero of multiplicity m a step multiplies
+ * |(u, v)| by ((m-1)/m)^m <= 1/e).  *evals (may be NULL) is increased by
+ * the evaluations of (u, v).  Returns 0 on convergence. */
+int sq_field_newton_local(const sem_field *f, int e, double *r, double *s, int *evals);
 
 /* Winding number of (u, v) on the circle of radius rho around c, sampled
  * adaptively; SQ_ERR_INTERNAL if part of the circle leaves the domain. */
