@@ -203,9 +203,10 @@ static sq_status natural_patterns(const cad_face *face, const sq_field_analysis 
 
 /* Default route: the guiding field's layout unless its points are poor
  * (degenerate, unresolved, or with pairs to cancel) or give no valid
- * layout; then the H/θ field of the natural points with near pairs
- * cancelled, then of the Gauss–Bonnet-minimal pattern; the first valid
- * layout with the fewest points is kept (guiding last if not tried). */
+ * layout; then the H/θ field of the Gauss–Bonnet-minimal pattern, then
+ * of the natural points with near pairs cancelled: the valid layout with
+ * the fewest points is kept (guiding last if not tried), each pattern
+ * solved once. */
 static sq_status two_step(const cad_face *face, const sq_layout_options *opt,
                           sq_layout_result *out, sq_error *err)
 {
@@ -239,28 +240,27 @@ static sq_status two_step(const cad_face *face, const sq_layout_options *opt,
                  sq_tri_size(&tri, a->info.area));
     }
     rep->two_step = 1;
-    /* the near pairs cancelled, then every pair: the first valid of the
-     * fewest points (pats[2] has no more than pats[1]) */
+    /* the valid one of the fewest points: every pair cancelled (pats[2]
+     * has no more points than pats[1]), then the near pairs alone; st may
+     * hold the guiding field's failure, which a valid H/θ layout clears */
     sq_error e = {0};
-    int valid1 = attempt(face, opt, &pats[1], 1, out, &e) == SQ_OK;
-    /* st may hold the guiding field's failure: a valid H/θ layout clears it */
-    if (valid1 && pats[1].npoints == pats[2].npoints) {
+    if (pats[2].npoints < pats[1].npoints) {
+        if (attempt(face, opt, &pats[2], 1, out, &e) == SQ_OK) {
+            rep->pattern = 2;
+            st = SQ_OK;
+            goto done;
+        }
+        snprintf(rep->kept_why, sizeof rep->kept_why,
+                 "no valid H/theta layout of fewer points: %s", e.msg);
+    }
+    if (attempt(face, opt, &pats[1], 1, out, &e) == SQ_OK) {
         rep->pattern = 1;
         st = SQ_OK;
         goto done;
     }
-    if (pats[2].npoints < pats[1].npoints && attempt(face, opt, &pats[2], 1, out, &e) == SQ_OK) {
-        rep->pattern = 2;
-        st = SQ_OK;
-        goto done;
-    }
-    snprintf(rep->kept_why, sizeof rep->kept_why, "no valid H/theta layout of fewer points: %s",
-             e.msg);
-    if (valid1) {
-        rep->pattern = 1;
-        st = attempt(face, opt, &pats[1], 1, out, err);
-        goto done;
-    }
+    if (pats[2].npoints == pats[1].npoints)
+        snprintf(rep->kept_why, sizeof rep->kept_why,
+                 "no valid H/theta layout of fewer points: %s", e.msg);
     /* no H/θ layout: the guiding field's own (its failure is the one told) */
     rep->pattern = 0;
     rep->two_step = !tried_guiding;
