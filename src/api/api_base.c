@@ -106,7 +106,10 @@ sq_status sq_api_layout_options(const sq_options *o, int for_mesh, sq_layout_opt
     SQ_TRY(check_field(o, err));
     SQ_TRY(parse_method(o->method, &lo->field.method, err));
     if (o->field_order) lo->field.order = o->field_order;
-    if (o->field_order && for_mesh) lo->htheta.order = o->field_order;
+    if (o->field_order && for_mesh) { /* the user's order, alone */
+        lo->htheta.order = o->field_order;
+        lo->htheta_first_order = 0;
+    }
     if (o->tri_size > 0.0) lo->field.tri.size = o->tri_size;
     if (o->merge_distance > 0.0) lo->trace.merge_distance = o->merge_distance;
     lo->trace.progress = (sq_progress){o->progress, o->progress_data};

@@ -18,9 +18,11 @@ void sq_layout_options_default(sq_layout_options *opt)
 /* The mesh command's fields.  The mesh needs the layout's topology and
  * its singular points to a fraction of a quad: order 4 gives the guiding
  * field's layouts and mesh quality of order 8 on every example at a small
- * fraction of the solve.  The H/theta field stays at 8: at 6 its e^H sizes
- * drift (disc: 429 quads at 4, 300 at 6 and 8) and the holonomy check
- * (0.01 deg) fails on obtuse_quad_v2 (0.016 deg).  Its triangulation is
+ * fraction of the solve.  The H/theta field's geometry stays at order 8:
+ * at 6 on geometry 6 its e^H sizes drift (disc: 429 quads at 4, 300 at 6
+ * and 8) and the holonomy check (0.01 deg) fails on obtuse_quad_v2
+ * (0.016 deg); H and θ themselves are tried at 6 first (below).  Its
+ * triangulation is
  * graded to 1e-2 of the size at the singular corners (1e-3 by default;
  * coarser breaks that check too), and only to 1/4 of it at the imposed
  * points, whose log and arg terms H and θ carry in closed form: the same
@@ -29,6 +31,12 @@ void sq_layout_options_default(sq_layout_options *opt)
  * 0.04 s).  docs/mesh.md. */
 #define MESH_FIELD_ORDER 4
 #define MESH_HTHETA_ORDER 8
+/* H and θ at order 6 on the same order-8 geometry first, 8 only where 6
+ * gives no valid layout: at 6 every H/θ layout measured is valid (the
+ * disc, the pattern files and the 20 corpus faces of the H/θ path, with
+ * their irregular counts; 2 of the 20 change their quad counts) at 60 %
+ * of the solve's time (docs/benchmarks.md, "H and θ at order 6 first") */
+#define MESH_HTHETA_FIRST_ORDER 6
 #define MESH_HTHETA_GRADING 1e-2
 #define MESH_HTHETA_POINT_GRADING 0.25
 
@@ -37,6 +45,7 @@ void sq_layout_options_for_mesh(sq_layout_options *opt)
     sq_layout_options_default(opt);
     opt->field.order = MESH_FIELD_ORDER;
     opt->htheta.order = MESH_HTHETA_ORDER;
+    opt->htheta_first_order = MESH_HTHETA_FIRST_ORDER;
     opt->htheta.grading = MESH_HTHETA_GRADING;
     opt->htheta.point_grading = MESH_HTHETA_POINT_GRADING;
 }
@@ -133,8 +142,9 @@ static sq_status trace_and_build(const cad_face *face, const sq_layout_options *
 /* One attempt: the guiding field's own points (pat NULL) or the H/θ field
  * of pat.  On failure out keeps what was built (SQ_ERR_LAYOUT: the last
  * layout, for pictures and reports). */
-static sq_status attempt(const cad_face *face, const sq_layout_options *opt, const sq_pattern *pat,
-                         int from_analysis, sq_layout_result *out, sq_error *err)
+static sq_status attempt_once(const cad_face *face, const sq_layout_options *opt,
+                              const sq_pattern *pat, int from_analysis, sq_layout_result *out,
+                              sq_error *err)
 {
     clear_attempt(out);
     sq_cross_field field;
@@ -148,6 +158,23 @@ static sq_status attempt(const cad_face *face, const sq_layout_options *opt, con
     }
     if (st == SQ_OK) st = trace_and_build(face, opt, &field, out, err);
     return st;
+}
+
+/* attempt_once, the H/θ field at htheta_first_order first where one is
+ * set: whatever fails there (an invalid layout, a hole's holonomy broken
+ * by the lower order's error) is tried again at the full order, whose
+ * outcome stands (a refused pattern is refused again before anything is
+ * solved). */
+static sq_status attempt(const cad_face *face, const sq_layout_options *opt, const sq_pattern *pat,
+                         int from_analysis, sq_layout_result *out, sq_error *err)
+{
+    const int first = opt->htheta_first_order;
+    if (!pat || first <= 0 || first >= opt->htheta.order)
+        return attempt_once(face, opt, pat, from_analysis, out, err);
+    sq_layout_options low = *opt;
+    low.htheta.order = first;
+    if (attempt_once(face, &low, pat, from_analysis, out, err) == SQ_OK) return SQ_OK;
+    return attempt_once(face, opt, pat, from_analysis, out, err);
 }
 
 /* Gauss–Bonnet's least number of interior irregular vertices for these
@@ -176,9 +203,10 @@ static sq_status natural_patterns(const cad_face *face, const sq_field_analysis 
 
 /* Default route: the guiding field's layout unless its points are poor
  * (degenerate, unresolved, or with pairs to cancel) or give no valid
- * layout; then the H/θ field of the natural points with near pairs
- * cancelled, then of the Gauss–Bonnet-minimal pattern; the first valid
- * layout with the fewest points is kept (guiding last if not tried). */
+ * layout; then the H/θ field of the Gauss–Bonnet-minimal pattern, then
+ * of the natural points with near pairs cancelled: the valid layout with
+ * the fewest points is kept (guiding last if not tried), each pattern
+ * solved once. */
 static sq_status two_step(const cad_face *face, const sq_layout_options *opt,
                           sq_layout_result *out, sq_error *err)
 {
@@ -212,28 +240,27 @@ static sq_status two_step(const cad_face *face, const sq_layout_options *opt,
                  sq_tri_size(&tri, a->info.area));
     }
     rep->two_step = 1;
-    /* the near pairs cancelled, then every pair: the first valid of the
-     * fewest points (pats[2] has no more than pats[1]) */
+    /* the valid one of the fewest points: every pair cancelled (pats[2]
+     * has no more points than pats[1]), then the near pairs alone; st may
+     * hold the guiding field's failure, which a valid H/θ layout clears */
     sq_error e = {0};
-    int valid1 = attempt(face, opt, &pats[1], 1, out, &e) == SQ_OK;
-    /* st may hold the guiding field's failure: a valid H/θ layout clears it */
-    if (valid1 && pats[1].npoints == pats[2].npoints) {
+    if (pats[2].npoints < pats[1].npoints) {
+        if (attempt(face, opt, &pats[2], 1, out, &e) == SQ_OK) {
+            rep->pattern = 2;
+            st = SQ_OK;
+            goto done;
+        }
+        snprintf(rep->kept_why, sizeof rep->kept_why,
+                 "no valid H/theta layout of fewer points: %s", e.msg);
+    }
+    if (attempt(face, opt, &pats[1], 1, out, &e) == SQ_OK) {
         rep->pattern = 1;
         st = SQ_OK;
         goto done;
     }
-    if (pats[2].npoints < pats[1].npoints && attempt(face, opt, &pats[2], 1, out, &e) == SQ_OK) {
-        rep->pattern = 2;
-        st = SQ_OK;
-        goto done;
-    }
-    snprintf(rep->kept_why, sizeof rep->kept_why, "no valid H/theta layout of fewer points: %s",
-             e.msg);
-    if (valid1) {
-        rep->pattern = 1;
-        st = attempt(face, opt, &pats[1], 1, out, err);
-        goto done;
-    }
+    if (pats[2].npoints == pats[1].npoints)
+        snprintf(rep->kept_why, sizeof rep->kept_why,
+                 "no valid H/theta layout of fewer points: %s", e.msg);
     /* no H/θ layout: the guiding field's own (its failure is the one told) */
     rep->pattern = 0;
     rep->two_step = !tried_guiding;

@@ -19,6 +19,9 @@ typedef struct {
      * (Jezdimirović 2021) */
     const char *singularities;
     sq_htheta_options htheta;
+    /* 0, or a lower order of H and θ tried first: the full htheta.order
+     * only where that one gives no valid layout */
+    int htheta_first_order;
     int allow_misaligned;     /* trace even if a hole breaks holonomy */
 } sq_layout_options;
 
