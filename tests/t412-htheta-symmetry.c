@@ -51,13 +51,8 @@ int main(void)
 
     /* triangle, natural pattern */
     sq_test_open_face("triangle.step", &m, &f);
-    sq_field_options fo;
-    sq_field_options_default(&fo);
-    sq_field_analysis an;
-    SQ_TEST_OK(sq_field_analyse(f, &fo, &an, &err), err);
     sq_pattern p;
-    SQ_TEST_OK(sq_pattern_from_analysis(f, &an, &p, &err), err);
-    sq_field_analysis_free(&an);
+    sq_test_natural_pattern(f, &p);
     const double c[2] = {0.5, sqrt(3.0) / 6.0};
     fails += sq_check_int("triangle", "natural points", p.npoints, 1);
     if (p.npoints == 1) {

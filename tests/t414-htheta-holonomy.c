@@ -23,12 +23,7 @@ int main(void)
     sq_pattern p;
 
     /* natural */
-    sq_field_options fo;
-    sq_field_options_default(&fo);
-    sq_field_analysis an;
-    SQ_TEST_OK(sq_field_analyse(f, &fo, &an, &err), err);
-    SQ_TEST_OK(sq_pattern_from_analysis(f, &an, &p, &err), err);
-    sq_field_analysis_free(&an);
+    sq_test_natural_pattern(f, &p);
     fails += sq_check_int("natural", "points", p.npoints, 4);
     SQ_TEST_OK(sq_htheta_compute(f, &p, &o, &ht, &err), err);
     fails += sq_check_int("natural", "loops", ht.nloops, 2);

@@ -8,7 +8,7 @@
  * |∇U| / diameter away from the points), the differences' truncation
  * h^2 |∇^3 U| / 6 = 1e-8 relative and round-off |U| U / h (1e-12): 1e-4. */
 #include "htheta_field.h"
-#include "test_util.h"
+#include "test_face.h"
 
 #include <gsl/gsl_errno.h>
 
@@ -26,12 +26,7 @@ static int check(const char *file, const char *pattern)
         sq_test_path(path, sizeof path, 0, pattern);
         SQ_TEST_OK(sq_pattern_read(path, &p, &err), err);
     } else {
-        sq_field_options fo;
-        sq_field_options_default(&fo);
-        sq_field_analysis an;
-        SQ_TEST_OK(sq_field_analyse(f, &fo, &an, &err), err);
-        SQ_TEST_OK(sq_pattern_from_analysis(f, &an, &p, &err), err);
-        sq_field_analysis_free(&an);
+        sq_test_natural_pattern(f, &p);
     }
     sq_htheta_options o;
     sq_htheta_options_default(&o);

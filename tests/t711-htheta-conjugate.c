@@ -37,13 +37,8 @@ static int square_hole(void)
     cad_model *m = NULL;
     cad_face *f = NULL;
     sq_test_open_face("square_hole.step", &m, &f);
-    sq_field_options fo;
-    sq_field_options_default(&fo);
-    sq_field_analysis an;
-    SQ_TEST_OK(sq_field_analyse(f, &fo, &an, &err), err);
     sq_pattern p;
-    SQ_TEST_OK(sq_pattern_from_analysis(f, &an, &p, &err), err);
-    sq_field_analysis_free(&an);
+    sq_test_natural_pattern(f, &p);
     sq_htheta_options o;
     sq_htheta_options_default(&o);
     sq_htheta ht;

@@ -3,6 +3,8 @@
 #define SQ_TEST_FACE_H
 
 #include "cad.h"
+#include "field_analysis.h"
+#include "pattern.h"
 #include "test_util.h"
 
 static inline void sq_test_open_face(const char *file, cad_model **m, cad_face **f)
@@ -12,6 +14,19 @@ static inline void sq_test_open_face(const char *file, cad_model **m, cad_face *
     sq_test_path(path, sizeof path, 0, file);
     SQ_TEST_OK(cad_model_read(path, m, &err), err);
     SQ_TEST_OK(cad_face_create(*m, 0, f, &err), err);
+}
+
+/* The natural pattern of face f: the guiding field's points at the
+ * default options (degenerate zeros split). */
+static inline void sq_test_natural_pattern(const cad_face *f, sq_pattern *p)
+{
+    sq_error err;
+    sq_field_options fo;
+    sq_field_options_default(&fo);
+    sq_field_analysis an;
+    SQ_TEST_OK(sq_field_analyse(f, &fo, &an, &err), err);
+    SQ_TEST_OK(sq_pattern_from_analysis(f, &an, p, &err), err);
+    sq_field_analysis_free(&an);
 }
 
 #endif
