@@ -240,27 +240,24 @@ static sq_status two_step(const cad_face *face, const sq_layout_options *opt,
                  sq_tri_size(&tri, a->info.area));
     }
     rep->two_step = 1;
-    /* the valid one of the fewest points: every pair cancelled (pats[2]
-     * has no more points than pats[1]), then the near pairs alone; st may
-     * hold the guiding field's failure, which a valid H/θ layout clears */
+    /* the valid one of the fewest points: every pair cancelled (pats[2],
+     * or pats[1] when that is the same pattern), then the near pairs
+     * alone; st may hold the guiding field's failure, which a valid H/θ
+     * layout clears */
     sq_error e = {0};
-    if (pats[2].npoints < pats[1].npoints) {
-        if (attempt(face, opt, &pats[2], 1, out, &e) == SQ_OK) {
-            rep->pattern = 2;
-            st = SQ_OK;
-            goto done;
-        }
-        snprintf(rep->kept_why, sizeof rep->kept_why,
-                 "no valid H/theta layout of fewer points: %s", e.msg);
+    const int least = pats[2].npoints < pats[1].npoints ? 2 : 1;
+    if (attempt(face, opt, &pats[least], 1, out, &e) == SQ_OK) {
+        rep->pattern = least;
+        st = SQ_OK;
+        goto done;
     }
-    if (attempt(face, opt, &pats[1], 1, out, &e) == SQ_OK) {
+    snprintf(rep->kept_why, sizeof rep->kept_why, "no valid H/theta layout of fewer points: %s",
+             e.msg);
+    if (least == 2 && attempt(face, opt, &pats[1], 1, out, &e) == SQ_OK) {
         rep->pattern = 1;
         st = SQ_OK;
         goto done;
     }
-    if (pats[2].npoints == pats[1].npoints)
-        snprintf(rep->kept_why, sizeof rep->kept_why,
-                 "no valid H/theta layout of fewer points: %s", e.msg);
     /* no H/θ layout: the guiding field's own (its failure is the one told) */
     rep->pattern = 0;
     rep->two_step = !tried_guiding;
