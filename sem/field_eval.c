@@ -36,7 +36,7 @@ sq_status sem_field_evaluator_create(const sem_field *f, const sem_locator *loc,
     *out = NULL;
     if (!f || !f->mesh || f->P < 0 || f->P > SEM_MAX_ORDER)
         return SQ_FAIL(err, SQ_ERR_USAGE, "field_evaluator_create: bad field");
-    if (loc && !sem_tri_mesh_same_elements(sem_locator_mesh(loc), f->mesh))
+    if (loc && sem_locator_mesh(loc) != f->mesh)
         return SQ_FAIL(err, SQ_ERR_USAGE, "field_evaluator_create: locator of another mesh");
     sem_field_evaluator *E = calloc(1, sizeof *E);
     if (!E) return SQ_FAIL(err, SQ_ERR_INTERNAL, "field_evaluator_create: out of memory");

@@ -15,9 +15,8 @@
 
 typedef struct sem_field_evaluator sem_field_evaluator; /* opaque */
 
-/* loc: a locator of the field's mesh, or of a mesh with its elements
- * (sem_tri_mesh_same_elements: the mesh it was cut from), borrowed, its
- * modal geometry shared; or NULL to build one (owned by the evaluator). */
+/* loc: a locator of the field's mesh, borrowed, its modal geometry
+ * shared; or NULL to build one (owned by the evaluator). */
 sq_status sem_field_evaluator_create(const sem_field *f, const sem_locator *loc,
                                      sem_field_evaluator **out, sq_error *err);
 void sem_field_evaluator_free(sem_field_evaluator **ev); /* NULL-safe, NULLs *ev */

@@ -5,7 +5,6 @@
 
 #include <stdint.h>
 #include <stdlib.h>
-#include <string.h>
 
 sq_status sem_tri_mesh_create(int order, int nverts, int ntris, sem_tri_mesh **out, sq_error *err)
 {
@@ -65,13 +64,6 @@ static int cmp_edge(const void *p, const void *q)
     if (x->a != y->a) return (x->a > y->a) - (x->a < y->a);
     if (x->b != y->b) return (x->b > y->b) - (x->b < y->b);
     return (x->he > y->he) - (x->he < y->he);
-}
-
-int sem_tri_mesh_same_elements(const sem_tri_mesh *a, const sem_tri_mesh *b)
-{
-    if (a == b) return 1;
-    return a && b && a->ntris == b->ntris && a->order == b->order &&
-           !memcmp(a->gxy, b->gxy, sizeof(double) * 2 * (size_t)a->nodes_per_tri * a->ntris);
 }
 
 sq_status sem_tri_mesh_build_neighbours(sem_tri_mesh *mesh, sq_error *err)

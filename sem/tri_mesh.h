@@ -31,10 +31,6 @@ typedef struct {
 sq_status sem_tri_mesh_create(int order, int nverts, int ntris, sem_tri_mesh **out, sq_error *err);
 void sem_tri_mesh_free(sem_tri_mesh **mesh); /* NULL-safe, NULLs *mesh */
 
-/* Whether a and b have the same elements: number, order and geometry nodes
- * (a mesh and its cut, tri_mesh_cut.h), whatever their connectivity. */
-int sem_tri_mesh_same_elements(const sem_tri_mesh *a, const sem_tri_mesh *b);
-
 /* Fill neigh[] from tri[] (edges shared by two elements). SQ_ERR_INTERNAL
  * if an edge is shared by more than two elements. */
 sq_status sem_tri_mesh_build_neighbours(sem_tri_mesh *mesh, sq_error *err);

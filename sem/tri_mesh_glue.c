@@ -1,5 +1,5 @@
 /* semquad sem/ — gluing a mesh along pairs of its boundary edges. */
-#include "tri_mesh_cut.h"
+#include "tri_mesh_glue.h"
 
 #include <stdlib.h>
 #include <string.h>

@@ -1,8 +1,6 @@
-/* semquad sem/ — a mesh glued along pairs of its boundary edges (the
- * inverse of cutting it open along interior edges, which no caller needs
- * since θ of the H/θ field is solved on the uncut mesh: theta_field.h). */
-#ifndef SEM_TRI_MESH_CUT_H
-#define SEM_TRI_MESH_CUT_H
+/* semquad sem/ — a mesh glued along pairs of its boundary edges. */
+#ifndef SEM_TRI_MESH_GLUE_H
+#define SEM_TRI_MESH_GLUE_H
 
 #include "tri_mesh.h"
 

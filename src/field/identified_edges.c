@@ -2,7 +2,7 @@
  * edges (identified_edges.h, designs 1 and 2). */
 #include "identified_edges.h"
 
-#include "tri_mesh_cut.h"
+#include "tri_mesh_glue.h"
 
 #include <math.h>
 #include <stdlib.h>
