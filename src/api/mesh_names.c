@@ -3,6 +3,7 @@
  * the mesh's boundary curves, and the file's face names to a domain's
  * faces, which the writers turn into group names. */
 #include "api_private.h"
+#include "sq_segment.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -39,14 +40,6 @@ sq_status sq_api_names_check(const sq_options *o, sq_error *err)
     return SQ_OK;
 }
 
-static double segment_distance(const double *a, const double *b, double x, double y)
-{
-    double dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
-    double t = l2 > 0.0 ? ((x - a[0]) * dx + (y - a[1]) * dy) / l2 : 0.0;
-    t = fmin(1.0, fmax(0.0, t));
-    return hypot(a[0] + t * dx - x, a[1] + t * dy - y);
-}
-
 /* The tag of the boundary curve nearest (x, y) (through the polylines of
  * its sides' nodes), refused when farther than the mean boundary side,
  * the mesh's size along its boundary. */
@@ -54,13 +47,14 @@ static sq_status nearest_tag(const sq_quad_mesh *m, const sq_boundary_name *b, i
                              sq_error *err)
 {
     int Q = m->order, npe = (Q + 1) * (Q + 1);
+    const double x[2] = {b->x, b->y};
     double best = HUGE_VAL, sides = 0.0;
     for (int s = 0; s < m->nbnd; s++) {
         const int *c = &m->conn[(size_t)m->bnd_quad[s] * npe];
         for (int k = 0; k < Q; k++) {
             const double *p = &m->xy[2 * (size_t)c[sq_quad_side_node(Q, m->bnd_side[s], k)]];
             const double *q = &m->xy[2 * (size_t)c[sq_quad_side_node(Q, m->bnd_side[s], k + 1)]];
-            double d = segment_distance(p, q, b->x, b->y);
+            double d = sq_segment_distance(x, p, q, NULL);
             if (d < best) best = d, *tag = m->bnd_tag[s];
             sides += hypot(q[0] - p[0], q[1] - p[1]);
         }

@@ -1,6 +1,7 @@
 #include "triangulate.h"
 
 #include "face_info.h"
+#include "sq_segment.h"
 #include "tri_curve.h"
 #include "tri_geom.h"
 #include "tri_lagrange.h"
@@ -345,10 +346,7 @@ static int point_in_polygon(const bpoly *p, int start, const double q[2])
     int inside = 0, i = start;
     do {
         int j = p->next[i];
-        const double *a = &p->xy[2 * i], *c = &p->xy[2 * j];
-        if ((a[1] > q[1]) != (c[1] > q[1]) &&
-            q[0] < a[0] + (q[1] - a[1]) * (c[0] - a[0]) / (c[1] - a[1]))
-            inside = !inside;
+        inside ^= sq_segment_crosses_ray(q, &p->xy[2 * i], &p->xy[2 * j]);
         i = j;
     } while (i != start);
     return inside;

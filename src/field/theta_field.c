@@ -1,6 +1,7 @@
 #include "theta_field.h"
 
 #include "poisson.h"
+#include "sq_segment.h"
 
 #include <math.h>
 #include <stdlib.h>
@@ -100,14 +101,10 @@ static double hole_distance(const sem_tri_mesh *m, const int *loops, int l, cons
         const int va = m->tri[q], vb = m->tri[3 * (q / 3) + (q % 3 + 1) % 3];
         if (loops[va] != l || loops[vb] != l) continue;
         const double *a = &m->vxy[2 * va], *b = &m->vxy[2 * vb];
-        const double ex = b[0] - a[0], ey = b[1] - a[1];
-        const double u = fmax(0.0, fmin(1.0, ((p[0] - a[0]) * ex + (p[1] - a[1]) * ey) /
-                                                 (ex * ex + ey * ey)));
-        const double dx = p[0] - a[0] - u * ex, dy = p[1] - a[1] - u * ey;
+        const double u = sq_segment_foot(p, a, b);
+        const double dx = p[0] - a[0] - u * (b[0] - a[0]), dy = p[1] - a[1] - u * (b[1] - a[1]);
         d2 = fmin(d2, dx * dx + dy * dy);
-        if ((a[1] > p[1]) != (b[1] > p[1]) &&
-            p[0] < a[0] + (p[1] - a[1]) / (b[1] - a[1]) * ex)
-            cross ^= 1;
+        cross ^= sq_segment_crosses_ray(p, a, b);
     }
     *inside = cross;
     return sqrt(d2);

@@ -3,6 +3,7 @@
  * branch selection at every evaluation, and the stops (boundary crossing
  * found exactly on the CAD curve, capture at singular points, length bound,
  * obstacles for sq_trace_continue). */
+#include "sq_segment.h"
 #include "trace_private.h"
 
 #include <math.h>
@@ -168,16 +169,6 @@ static void ab_weights(int k, const double *tau, double h, double *wts)
 static double wrap_pi(double a)
 {
     return a - 2.0 * M_PI * floor((a + M_PI) / (2.0 * M_PI));
-}
-
-/* Distance from point p to segment [a, b]; *u the parameter of the foot. */
-static double point_segment(const double p[2], const double a[2], const double b[2], double *u)
-{
-    double dx = b[0] - a[0], dy = b[1] - a[1], l2 = dx * dx + dy * dy;
-    double t = l2 > 0.0 ? ((p[0] - a[0]) * dx + (p[1] - a[1]) * dy) / l2 : 0.0;
-    t = t < 0.0 ? 0.0 : (t > 1.0 ? 1.0 : t);
-    if (u) *u = t;
-    return hypot(a[0] + t * dx - p[0], a[1] + t * dy - p[1]);
 }
 
 /* Signed distance-like side function of p with respect to edge e: > 0 on
@@ -391,7 +382,7 @@ sq_status sq_walker_step(sq_tracer *tr, sq_walker *w, sq_error *err)
     for (int j = 0; j < tr->nsing; j++) {
         if (j == w->start_sing && w->length < 4.0 * rc) continue;
         double sp[2] = {tr->sing[j].x, tr->sing[j].y}, u;
-        if (point_segment(sp, x, xn, &u) < rc) {
+        if (sq_segment_distance(sp, x, xn, &u) < rc) {
             double dlast = hypot(xn[0] - sp[0], xn[1] - sp[1]);
             if (u < 1.0 || dlast < 0.5 * h) {
                 SQ_TRY(sq_walker_push(w, sp, err)); /* x may move: not used below */
