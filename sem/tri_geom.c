@@ -129,10 +129,9 @@ static void sample_det(const sem_tri_geom_sampler *S, const double *gxy, double 
         det[p] = xr[p] * ys[p] - xs[p] * yr[p];
 }
 
-double sem_tri_geom_sampler_scaled_jacobian(const sem_tri_geom_sampler *S, const double *gxy)
+/* min det J / max det J of the samples (negative when none is positive) */
+static double ratio_of(const sem_tri_geom_sampler *S, const double *det)
 {
-    double det[SEM_MAX_SAMPLES];
-    sample_det(S, gxy, det);
     double jmin = HUGE_VAL, jmax = -HUGE_VAL;
     for (int p = 0; p < S->npts; ++p) {
         const double d = det[p];
@@ -147,13 +146,35 @@ double sem_tri_geom_sampler_scaled_jacobian(const sem_tri_geom_sampler *S, const
     return jmin < 0.0 ? -1.0 : 0.0;
 }
 
-double sem_tri_geom_sampler_area(const sem_tri_geom_sampler *S, const double *gxy)
+/* det J integrated by the rule (the samples after the nodes) */
+static double area_of(const sem_tri_geom_sampler *S, const double *det)
 {
-    double det[SEM_MAX_SAMPLES], a = 0.0;
-    sample_det(S, gxy, det);
+    double a = 0.0;
     for (int p = S->nn; p < S->npts; ++p)
         a += S->w[p - S->nn] * det[p];
     return a;
+}
+
+double sem_tri_geom_sampler_scaled_jacobian(const sem_tri_geom_sampler *S, const double *gxy)
+{
+    double det[SEM_MAX_SAMPLES];
+    sample_det(S, gxy, det);
+    return ratio_of(S, det);
+}
+
+double sem_tri_geom_sampler_area(const sem_tri_geom_sampler *S, const double *gxy)
+{
+    double det[SEM_MAX_SAMPLES];
+    sample_det(S, gxy, det);
+    return area_of(S, det);
+}
+
+double sem_tri_geom_sampler_measure(const sem_tri_geom_sampler *S, const double *gxy, double *area)
+{
+    double det[SEM_MAX_SAMPLES];
+    sample_det(S, gxy, det);
+    *area = area_of(S, det);
+    return ratio_of(S, det);
 }
 
 double sem_tri_geom_scaled_jacobian(const sem_tri_lagrange *lag, const double *gxy)

@@ -29,5 +29,10 @@ double sem_tri_geom_sampler_scaled_jacobian(const sem_tri_geom_sampler *s, const
 /* Signed area of the element: det J integrated by the sampler's rule of
  * degree 2*order (exact for straight-sided elements, spectral on curved). */
 double sem_tri_geom_sampler_area(const sem_tri_geom_sampler *s, const double *gxy);
+/* Both from one sampling of det J: the scaled Jacobian, and the area into
+ * *area (the curved triangulation checks every element and sums the face's
+ * area). */
+double sem_tri_geom_sampler_measure(const sem_tri_geom_sampler *s, const double *gxy,
+                                    double *area);
 
 #endif

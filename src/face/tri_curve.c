@@ -41,7 +41,7 @@ static sq_status edge_displacement(const cad_face *face, const sem_tri_mesh *m, 
 }
 
 sq_status sq_tri_curve(const cad_face *face, sem_tri_mesh *mesh, const double *bs,
-                       double *jac_min, sq_error *err)
+                       double *jac_min, double *area, sq_error *err)
 {
     int P = mesh->order, nn = mesh->nodes_per_tri;
     sem_tri_lagrange *lag = NULL;
@@ -60,7 +60,7 @@ sq_status sq_tri_curve(const cad_face *face, sem_tri_mesh *mesh, const double *b
     if (P >= 1 && (st = sem_gauss_lobatto(P + 1, xi, w, err)) != SQ_OK) goto done;
     if ((st = sem_tri_lagrange_create(P, &lag, err)) != SQ_OK) goto done;
     if ((st = sem_tri_geom_sampler_create(lag, &sampler, err)) != SQ_OK) goto done;
-
+    *area = 0.0;
     for (int e = 0; e < mesh->ntris && st == SQ_OK; e++) {
         const int *v = &mesh->tri[3 * e];
         double *g = &mesh->gxy[2 * (size_t)nn * (size_t)e];
@@ -88,7 +88,9 @@ sq_status sq_tri_curve(const cad_face *face, sem_tri_mesh *mesh, const double *b
                 }
             }
         }
-        if (st == SQ_OK && jac_min) jac_min[e] = sem_tri_geom_sampler_scaled_jacobian(sampler, g);
+        double a = 0.0;
+        if (st == SQ_OK) jac_min[e] = sem_tri_geom_sampler_measure(sampler, g, &a);
+        *area += a;
     }
 done:
     sem_tri_geom_sampler_free(&sampler);

@@ -10,8 +10,9 @@
  * straight, an element edge k with btag >= 0 follows CAD edge btag from arc
  * length bs[6e+2k] to bs[6e+2k+1], its nodes at the Gauss–Lobatto–Legendre
  * arc-length positions, and the displacement blended into the element.
- * On return jac_min[e] (may be NULL) holds each element's scaled Jacobian. */
+ * On return jac_min[e] holds each element's scaled Jacobian and *area the
+ * mesh's area (the elements' det J integrated), from one sampling. */
 sq_status sq_tri_curve(const cad_face *face, sem_tri_mesh *mesh, const double *bs,
-                       double *jac_min, sq_error *err);
+                       double *jac_min, double *area, sq_error *err);
 
 #endif

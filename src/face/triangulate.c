@@ -579,7 +579,7 @@ static sq_status build_mesh(const cad_face *face, const sq_tri_options *opt, con
             out->bs[6 * e + 2 * k + 1] = seg_end_s(face, p, i);
         }
     }
-    if ((st = sq_tri_curve(face, m, out->bs, jac, err)) != SQ_OK) goto done;
+    if ((st = sq_tri_curve(face, m, out->bs, jac, &out->area, err)) != SQ_OK) goto done;
     *nbad = 0;
     out->min_scaled_jacobian = HUGE_VAL;
     for (int e = 0; e < m->ntris && st == SQ_OK; e++) {
@@ -593,21 +593,6 @@ static sq_status build_mesh(const cad_face *face, const sq_tri_options *opt, con
     }
 done:
     free(map);
-    return st;
-}
-
-static sq_status mesh_area(const sem_tri_mesh *m, double *area, sq_error *err)
-{
-    sem_tri_lagrange *lag = NULL;
-    sem_tri_geom_sampler *S = NULL;
-    SQ_TRY(sem_tri_lagrange_create(m->order, &lag, err));
-    sq_status st = sem_tri_geom_sampler_create(lag, &S, err);
-    double a = 0.0;
-    for (int e = 0; e < m->ntris && st == SQ_OK; e++)
-        a += sem_tri_geom_sampler_area(S, &m->gxy[2 * (size_t)m->nodes_per_tri * (size_t)e]);
-    *area = a;
-    sem_tri_geom_sampler_free(&S);
-    sem_tri_lagrange_free(&lag);
     return st;
 }
 
@@ -661,10 +646,7 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
                      "no valid curved triangulation after %d refinements of the boundary "
                      "(smallest scaled Jacobian %.3g); try a smaller --size",
                      MAX_ROUNDS, out->mesh ? out->min_scaled_jacobian : 0.0);
-    if (st == SQ_OK) {
-        out->size = size;
-        st = mesh_area(out->mesh, &out->area, err);
-    }
+    if (st == SQ_OK) out->size = size;
     if (st != SQ_OK) sq_triangulation_free(out);
     bpoly_free(&p);
     cad_cdt_output_free(&o);
