@@ -74,9 +74,10 @@ static sq_status untangle(const cad_face *face, const sq_face_info *info, qm_vme
 }
 
 /* From the vertices start: relaxed with the singular points free to even
- * out their angles, then held where they are, then not relaxed at all;
- * each attempt raised to order Q and kept in *out when its smallest scaled
- * Jacobian beats *best_sj; stops at the first of at least SJ_ACCEPT. */
+ * out their angles, then held where they are (unless there are none to
+ * hold: the same relaxation again), then not relaxed at all; each attempt
+ * raised to order Q and kept in *out when its smallest scaled Jacobian
+ * beats *best_sj; stops at the first of at least SJ_ACCEPT. */
 static sq_status relax_attempts(const cad_face *face, const sq_face_info *info, qm_vmesh *v,
                                 const double *start, const int *keep,
                                 const sq_mesher_options *opt, sq_relax_work **work,
@@ -84,6 +85,7 @@ static sq_status relax_attempts(const cad_face *face, const sq_face_info *info, 
 {
     sq_status st = SQ_OK;
     for (int attempt = 0; attempt < 3 && st == SQ_OK && *best_sj < SJ_ACCEPT; attempt++) {
+        if (attempt == 1 && !qm_has_free_singular(v, keep)) continue;
         sq_quad_mesh *m = NULL;
         memcpy(v->xy, start, sizeof(double) * 2 * (size_t)v->nv);
         int folded = 0;

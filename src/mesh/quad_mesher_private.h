@@ -151,6 +151,10 @@ int qm_quad_valid(const qm_vmesh *v, int q);
 /* Laplace untangling of the free vertices (keep: vertices held, or NULL). */
 sq_status qm_smooth(const cad_face *face, const sq_face_info *info, qm_vmesh *v, const int *keep,
                     sq_error *err);
+/* Whether v has an interior vertex of valence other than 4 that keep does
+ * not hold: one that qm_relax frees with move_singular, else both its
+ * modes hold the same vertices. */
+int qm_has_free_singular(const qm_vmesh *v, const int *keep);
 /* Winslow relaxation (quad_relax.h) with the singular points free or held;
  * keeping the quads' aspect ratios where opt has the user's sizes;
  * untangle: the untangling of folded corners instead (sq_quad_untangle). */

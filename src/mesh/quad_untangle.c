@@ -164,6 +164,18 @@ sq_status qm_smooth(const cad_face *face, const sq_face_info *info, qm_vmesh *v,
     return st;
 }
 
+/* Each vertex's quads (deg) and whether it is on the boundary (bnd), nv
+ * flags each. */
+static void vertex_roles(const qm_vmesh *v, int *deg, int *bnd)
+{
+    for (int q = 0; q < v->nq; q++)
+        for (int k = 0; k < 4; k++) {
+            deg[v->quad[4 * q + k]]++;
+            if (v->side_tag[4 * q + k] >= 0)
+                bnd[v->quad[4 * q + k]] = bnd[v->quad[4 * q + (k + 1) % 4]] = 1;
+        }
+}
+
 /* The vertices the relaxation holds (nv + 1 flags, NULL when out of
  * memory): keep, the face's corners and, unless move_singular, the
  * interior vertices of valence other than 4. */
@@ -173,12 +185,7 @@ static int *held_vertices(const sq_face_info *info, const qm_vmesh *v, const int
     int *deg = calloc((size_t)v->nv + 1, sizeof(int)), *bnd = calloc((size_t)v->nv + 1, sizeof(int));
     int *fixed = calloc((size_t)v->nv + 1, sizeof(int));
     if (deg && bnd && fixed) {
-        for (int q = 0; q < v->nq; q++)
-            for (int k = 0; k < 4; k++) {
-                deg[v->quad[4 * q + k]]++;
-                if (v->side_tag[4 * q + k] >= 0)
-                    bnd[v->quad[4 * q + k]] = bnd[v->quad[4 * q + (k + 1) % 4]] = 1;
-            }
+        vertex_roles(v, deg, bnd);
         for (int i = 0; i < v->nv; i++)
             fixed[i] = (keep && keep[i]) || (!bnd[i] && deg[i] != 4 && !move_singular) ||
                        (bnd[i] && at_face_corner(info, &v->xy[2 * i]));
@@ -189,6 +196,18 @@ static int *held_vertices(const sq_face_info *info, const qm_vmesh *v, const int
     free(deg);
     free(bnd);
     return fixed;
+}
+
+int qm_has_free_singular(const qm_vmesh *v, const int *keep)
+{
+    int *deg = calloc((size_t)v->nv + 1, sizeof(int)), *bnd = calloc((size_t)v->nv + 1, sizeof(int));
+    int found = !deg || !bnd; /* out of memory: as if there were one (both attempts run) */
+    if (!found) vertex_roles(v, deg, bnd);
+    for (int i = 0; i < v->nv && !found; i++)
+        found = !bnd[i] && deg[i] != 4 && !(keep && keep[i]);
+    free(deg);
+    free(bnd);
+    return found;
 }
 
 /* Design 3b: the whole vertex mesh relaxed towards an orthogonal map
