@@ -163,7 +163,7 @@ sq_status qr_compass(const cad_face *face, const sq_relax_mesh *m, relax_work *w
                 for (int k = 0; k < ndir && st == SQ_OK; k++) {
                     if (w->edge[i] >= 0) {
                         w->s[i] = s0 + (k ? -h : h);
-                        st = qr_on_edge(face, w, i, &w->s[i], x, NULL, err);
+                        st = qr_on_edge(face, w, i, &w->s[i], x, NULL, NULL, err);
                     } else {
                         x[0] = x0[0] + h * DIR[k][0];
                         x[1] = x0[1] + h * DIR[k][1];

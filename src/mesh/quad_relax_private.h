@@ -20,6 +20,7 @@ struct sq_relax_work {
     double *s;    /* nv: arc length of a sliding vertex */
     double *len;  /* nv: length of that edge, negative when the edge is open */
     double *tan;  /* 2*nv: unit tangent of a sliding vertex */
+    double *kappa; /* nv: signed curvature of its edge there (> 0 turning left) */
     int ndof;
     int *start; /* nv+1: CSR of the quads around each vertex */
     int *around;
@@ -39,10 +40,10 @@ struct sq_relax_work {
 typedef struct sq_relax_work relax_work;
 
 /* The point of sliding vertex i's edge at arc length *s (wrapped on a
- * closed edge, clamped on an open one) and the tangent there (t may be
- * NULL). */
+ * closed edge, clamped on an open one), the tangent and the signed
+ * curvature there (t, kappa may be NULL). */
 sq_status qr_on_edge(const cad_face *face, const relax_work *w, int i, double *s, double x[2],
-                     double t[2], sq_error *err);
+                     double t[2], double *kappa, sq_error *err);
 
 /* Compass search on the free vertices after the energy's optimum: phase 0
  * raises the worst eta around each vertex, phase 1 the quads just below
