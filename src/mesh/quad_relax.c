@@ -17,6 +17,7 @@
  * convergence cuts them by 100 and more near the optimum; at 1/4 a tail of
  * ratio 0.24, stress face 0003_bspline, ran 8 more projected steps) */
 #define EXACT_RATIO 0.1
+#define EXACT_DROP 1e-4 /* the first exact steps' threshold (sq_quad_relax) */
 #define PCG_RTOL 5e-2
 #define PCG_MAXIT 6
 #define DOUBLE_RHO 1.1
@@ -887,6 +888,80 @@ sq_status sq_quad_untangle(const cad_face *face, sq_relax_mesh *m, sq_relax_work
     return st;
 }
 
+/* Where the Newton steps stand in their tail: the exact steps that end a
+ * linear one (tail_done). */
+typedef struct {
+    int exact;         /* the next step is an exact Newton step */
+    int early;         /* its tail began above STALL_DROP of the energy */
+    double exact_drop; /* decreases below it (of E) in a linear tail begin them */
+    double last_drop;  /* the last step's decrease */
+} relax_tail;
+
+/* An exact step failed (PCG found no descent direction, or it needed
+ * halving): returns 1 and goes back to projected steps, with a tenfold
+ * lower threshold for the next exact ones, where the tail began above
+ * STALL_DROP (its model was not yet right, the relaxation goes on);
+ * 0 where it did not (the relaxation ends: it is within STALL_DROP). */
+static int tail_retreat(relax_tail *t)
+{
+    if (!t->early) return 0;
+    t->exact = t->early = 0;
+    t->exact_drop = fmax(0.1 * t->exact_drop, STALL_DROP);
+    return 1;
+}
+
+/* After a step from energy E to E1 (h halvings, no vertex moved by more
+ * than `moved`): 1 when the relaxation has converged; t updated. */
+static int tail_done(relax_tail *t, double E, double E1, int h, double moved, double extent)
+{
+    const double drop = E - E1;
+    /* converged: a step moved no vertex by more than CONVERGED of the
+     * mesh's extent.  Tight, as the compass search after this decides
+     * on small differences of its quality measure: stopped at 1e-6 of
+     * the extent, two paths to the same optimum ended in compass
+     * results 4e-4 apart in mean eta (triangle.step) */
+    int done = moved < CONVERGED * extent || drop < 1e-15 * E;
+    /* or stalled: a decrease below STALL_DROP of the energy and at
+     * least half the step before's is linear convergence (the inexact
+     * directions of a near-symmetry, e.g. a thin ring's vertices drifting
+     * along it: stress 0073 moved 1e-5 of the extent per step for 30
+     * steps while the energy fell by 1e-10 of itself); stopping leaves
+     * what is left of a geometric series of ratio r, r / (1 - r) times
+     * the last decrease: under 10 STALL_DROP of the energy for r < 0.9. */
+    done |= drop < STALL_DROP * E && drop >= 0.5 * t->last_drop;
+    /* A linear tail that this does not stop yet (a ratio from EXACT_RATIO)
+     * is ended by exact Newton steps.  Its cause is the projected Hessian,
+     * which overestimates the curvature along a soft mode (the disc's
+     * rotation along its circle: each decrease 1.1-1.8 times its model's,
+     * rho): with PCG run to 1e-6 the tail stays linear (0.35).  Near the
+     * optimum the exact Hessian is definite there; its step, by PCG
+     * preconditioned with the projected Hessian's factor, takes the rest
+     * of the series at once, and the tests above stop the relaxation after
+     * it or after a few more exact steps.  They begin below EXACT_DROP of
+     * the energy; one that fails there goes back to projected steps and
+     * the next begin ten times lower (tail_retreat), down to STALL_DROP,
+     * below which an exact step that needs halving is the last (its model
+     * is off, and the energy within STALL_DROP).  Begun at STALL_DROP
+     * alone, the disc at --size 0.1 took 15 steps, the annulus 17; from
+     * EXACT_DROP, 9 and 10, to the same energy to 1e-15. */
+    if (t->exact && h > 0) done |= !tail_retreat(t);
+    /* Exact steps converge quadratically: the next decrease is about
+     * this one times its ratio to the one before, (E - E1)^2 /
+     * last_drop.  Where that is below the 1e-15 E that stops the
+     * relaxation anyway, the exact step just taken is the last (the
+     * disc at --size 0.1, its singular points 2e-11 off: exact
+     * decreases of 1.2e-10, 1.5e-13, 1.9e-15 and 1.9e-16 of E, the last
+     * two, at E's round-off, for nothing; which tail a run takes turns
+     * on such last digits). */
+    done |= t->exact && drop * drop < 1e-15 * E * t->last_drop;
+    if (!t->exact && drop < t->exact_drop * E && drop >= EXACT_RATIO * t->last_drop) {
+        t->exact = 1;
+        t->early = drop >= STALL_DROP * E;
+    }
+    t->last_drop = drop;
+    return done;
+}
+
 sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **keep, sq_error *err)
 {
     relax_work *w = NULL;
@@ -918,25 +993,31 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
         }
     const double extent = hypot(hi[0] - lo[0], hi[1] - lo[1]);
     if (st == SQ_OK && m->stop_on_fold) st = boundary_folds(face, m, w, held, was, 1, &m->folded, err);
-    int fresh = 0, exact = 0;
-    double last_drop = HUGE_VAL;
+    int fresh = 0;
+    relax_tail t = {0, 0, EXACT_DROP, HUGE_VAL};
     for (int it = 0; it < MAX_NEWTON && st == SQ_OK && w->ndof > 0 && E < HUGE_VAL; it++) {
         sq_progress_report(&m->progress, "relax", it, MAX_NEWTON);
         double gd = 0.0, E1;
         int factored = 0, h;
         st = onto_edges(face, m, w, err);
-        if (st == SQ_OK) st = newton_direction(m, w, fresh, exact, target, 0.0, d, &gd, &factored, err);
-        if (st != SQ_OK || (exact && !(gd < 0.0))) break; /* no exact step */
+        if (st == SQ_OK)
+            st = newton_direction(m, w, fresh, t.exact, target, 0.0, d, &gd, &factored, err);
+        if (st == SQ_OK && t.exact && !(gd < 0.0)) { /* no exact step */
+            if (tail_retreat(&t)) continue;
+            break;
+        }
+        if (st != SQ_OK) break;
         fresh = 0;
         w->steps++;
         st = backtrack(face, m, w, d, target, 0.0, E, p, s0, &E1, &h, err);
         /* no decrease left: converged, or an inexact direction, retried
          * with a factorization (m is back where the step began) */
         if (st != SQ_OK || h == MAX_HALVINGS) {
-            if (st == SQ_OK && !factored && !exact) {
+            if (st == SQ_OK && !factored && !t.exact) {
                 fresh = 1;
                 continue;
             }
+            if (st == SQ_OK && t.exact && tail_retreat(&t)) continue;
             break;
         }
         double rho = h == 0 ? (E - E1) / (-0.5 * gd) : 0.0;
@@ -969,48 +1050,7 @@ sq_status sq_quad_relax(const cad_face *face, sq_relax_mesh *m, sq_relax_work **
         for (int i = 0; i < m->nv; i++)
             moved =
                 fmax(moved, fabs(m->xy[2 * i] - p[2 * i]) + fabs(m->xy[2 * i + 1] - p[2 * i + 1]));
-        /* converged: a step moved no vertex by more than CONVERGED of the
-         * mesh's extent.  Tight, as the compass search after this decides
-         * on small differences of its quality measure: stopped at 1e-6 of
-         * the extent, two paths to the same optimum ended in compass
-         * results 4e-4 apart in mean eta (triangle.step) */
-        int done = moved < CONVERGED * extent || E - E1 < 1e-15 * E;
-        /* or stalled: a decrease below STALL_DROP of the energy and at
-         * least half the step before's is linear convergence (the inexact
-         * directions of a near-symmetry, e.g. a thin ring's vertices drifting
-         * along it: stress 0073 moved 1e-5 of the extent per step for 30
-         * steps while the energy fell by 1e-10 of itself); stopping leaves
-         * what is left of a geometric series of ratio r, r / (1 - r) times
-         * the last decrease: under 10 STALL_DROP of the energy for r < 0.9. */
-        done |= E - E1 < STALL_DROP * E && E - E1 >= 0.5 * last_drop;
-        /* A linear tail that this does not stop yet (a ratio from
-         * EXACT_RATIO: the disc's rotation along its circle, decreases
-         * falling by 0.40-0.50 a step, 8 more steps to a ratio above 1/2) is
-         * ended by one exact Newton step.  Its cause is the projected
-         * Hessian, which overestimates the curvature along such a mode (each
-         * decrease 1.1-1.7 times its model's, rho): with PCG run to 1e-6 the
-         * tail stays linear (0.35).  Near the optimum the exact Hessian is
-         * definite there; its step, by PCG preconditioned with the projected
-         * Hessian's factor, takes the rest of the series at once (disc:
-         * 8.17e-9 of the 8.3e-9 left, rho 0.997, 15 steps instead of 22),
-         * and the tests above stop the relaxation after it or after a few
-         * more exact steps; an exact step that needs halving (its model is
-         * off: annulus, half_disc) is the last.  No
-         * exact step is taken when PCG does not solve it, it is no descent
-         * direction or it does not decrease the energy.  The meshes it
-         * changes keep their quality to 2e-7 (docs/benchmarks.md). */
-        done |= exact && h > 0;
-        /* Exact steps converge quadratically: the next decrease is about
-         * this one times its ratio to the one before, (E - E1)^2 /
-         * last_drop.  Where that is below the 1e-15 E that stops the
-         * relaxation anyway, the exact step just taken is the last (the
-         * disc at --size 0.1, its singular points 2e-11 off: exact
-         * decreases of 1.2e-10, 1.5e-13, 1.9e-15 and 1.9e-16 of E, the last
-         * two, at E's round-off, for nothing; which tail a run takes turns
-         * on such last digits). */
-        done |= exact && (E - E1) * (E - E1) < 1e-15 * E * last_drop;
-        exact |= E - E1 < STALL_DROP * E && E - E1 >= EXACT_RATIO * last_drop;
-        last_drop = E - E1;
+        const int done = tail_done(&t, E, E1, h, moved, extent);
         E = E1;
         /* a fold that the relaxation made is not undone by its later steps
          * (naca0012 with its singular points free: from the 3rd step on) */
