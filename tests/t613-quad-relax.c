@@ -9,7 +9,8 @@
  * a second one of the shaken grid with an interior vertex held off the
  * grid: that vertex stays where it is, and the others end where a
  * relaxation with nothing kept puts them, to 1e-8.  And stop_on_fold (ring
- * below), and bounds on the work on a thin face's mesh (strip below). */
+ * below), bounds on the work on a thin face's mesh (strip below), and the
+ * Newton steps where a sliding vertex's curve bends (bend below). */
 #include "cad.h"
 #include "quad_relax.h"
 #include "test_face.h"
@@ -162,6 +163,68 @@ static int ogrid(const cad_face *f)
     return fails;
 }
 
+/* The curve's bending (quad_relax.c, newton_direction): square_hole's hole
+ * (r = 0.25 at (0.5, 0.5)) inside a ring of 2 x BK quads whose outer
+ * vertices are held on the square of half side 1/2 around it, the middle
+ * ones free, the inner ones sliding on the circle; all shaken.  At the
+ * optimum the energy's gradient at the inner vertices is normal to the
+ * circle, not zero, and its term kappa n . grad E in their second
+ * derivative (kappa = 4, cells about as long as the radius) is what the
+ * Newton steps need to converge quadratically: 21 steps measured without
+ * it, 8 with it; the bound is the midpoint, 14.  Every corner stays
+ * convex (the relaxation's promise). */
+#define BK 8
+static int bend(const cad_face *f)
+{
+    double xy[2 * 3 * BK];
+    int quad[4 * 2 * BK], tag[4 * 2 * BK], fixed[3 * BK], hole = -1, fails = 0;
+    sq_error err;
+    for (int e = 0; e < cad_face_num_edges(f); e++) {
+        double d;
+        SQ_TEST_OK(cad_face_edge_project(f, e, (double[2]){0.75, 0.5}, NULL, NULL, &d, &err), err);
+        if (d < 1e-9) hole = e;
+    }
+    fails += sq_check_int("t613 bend", "hole edge found", hole >= 0, 1);
+    for (int p = 0; p < BK; p++) {
+        const double a = 2.0 * M_PI * p / BK, c = cos(a), s = sin(a);
+        const double sq = 0.5 / fmax(fabs(c), fabs(s)); /* the square's point on the ray */
+        const double ai = a + 0.03 * sin(5.0 * p);
+        xy[2 * p] = 0.5 + 0.25 * cos(ai), xy[2 * p + 1] = 0.5 + 0.25 * sin(ai);
+        xy[2 * (BK + p)] = 0.5 + 0.5 * (0.25 + sq) * c + 0.03 * sin(3.0 * p);
+        xy[2 * (BK + p) + 1] = 0.5 + 0.5 * (0.25 + sq) * s + 0.03 * cos(7.0 * p);
+        xy[2 * (2 * BK + p)] = 0.5 + sq * c, xy[2 * (2 * BK + p) + 1] = 0.5 + sq * s;
+        fixed[p] = fixed[BK + p] = 0;
+        fixed[2 * BK + p] = 1;
+    }
+    for (int l = 0; l < 2; l++)
+        for (int p = 0; p < BK; p++) {
+            /* counter-clockwise: inner p, outer p, outer p+1, inner p+1;
+             * the last side on the hole in the first layer */
+            const int q = l * BK + p, p1 = (p + 1) % BK;
+            const int c[4] = {l * BK + p, (l + 1) * BK + p, (l + 1) * BK + p1, l * BK + p1};
+            for (int k = 0; k < 4; k++)
+                quad[4 * q + k] = c[k], tag[4 * q + k] = l == 0 && k == 3 ? hole : -1;
+        }
+    sq_relax_mesh m = {3 * BK, 2 * BK, xy, quad, tag, fixed};
+    sq_relax_work *work = NULL;
+    SQ_TEST_OK(sq_quad_relax(f, &m, &work, &err), err);
+    int steps;
+    long polls;
+    sq_relax_work_stats(work, &steps, &polls);
+    sq_relax_work_free(&work);
+    fprintf(stderr, "t613 bend: %d Newton steps\n", steps);
+    fails += sq_check_int("t613 bend", "Newton steps <= 14", steps <= 14, 1);
+    int concave = 0;
+    for (int q = 0; q < 2 * BK; q++)
+        for (int k = 0; k < 4; k++) {
+            const double *o = &xy[2 * quad[4 * q + k]], *a = &xy[2 * quad[4 * q + (k + 1) % 4]],
+                         *b = &xy[2 * quad[4 * q + (k + 3) % 4]];
+            concave += (a[0] - o[0]) * (b[1] - o[1]) - (a[1] - o[1]) * (b[0] - o[0]) <= 0.0;
+        }
+    fails += sq_check_int("t613 bend", "corners not convex", concave, 0);
+    return fails;
+}
+
 /* The relaxation's work on a thin face's split-road mesh (stress corpus
  * class sliver: 0073, 25 920 quads, took 18 s of CPU, most of it in the
  * compass search): a strip of N pairs of right triangles, each cell
@@ -170,9 +233,10 @@ static int ogrid(const cad_face *f)
  * (quad_split.c), the strip's boundary held, its free vertices shaken.
  * The work is counted, not timed (sq_relax_work_stats), so the bounds hold
  * on any machine, up to the few decisions round-off may flip:
- * - Newton: 30 iterations measured, 46 without the stall test (before
- *   bf727d6: a linear convergence run on by inexact directions); the bound,
- *   38, is the midpoint.
+ * - Newton: 10 iterations measured (exact steps from 1e-4 of the energy,
+ *   quad_relax.c), 30 with exact steps from 1e-9 alone, 46 without the
+ *   stall test (before bf727d6: a linear convergence run on by inexact
+ *   directions); the bound, 38, fails the last.
  * - compass search: it polls the quads around a vertex at most 8
  *   directions x 6 steps + 1 = 49 times a visit, visits a vertex only after
  *   a neighbour moved, at most 50 sweeps a phase, 2 phases (4900 polls per
@@ -353,6 +417,7 @@ int main(void)
     fails += ring(f, 0.3, 0.0, 1, 0);
     fails += ring(f, 0.5, -0.4, 0, 1);
     fails += ring(f, 0.5, 0.0, 0, 0);
+    fails += bend(f);
     cad_face_free(&f);
     cad_model_free(&model);
     return fails != 0;
