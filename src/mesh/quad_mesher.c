@@ -74,21 +74,24 @@ static sq_status untangle(const cad_face *face, const sq_face_info *info, qm_vme
 }
 
 /* From the vertices start: relaxed with the singular points free to even
- * out their angles, then held where they are (unless there are none to
- * hold: the same relaxation again), then not relaxed at all; each attempt
- * raised to order Q and kept in *out when its smallest scaled Jacobian
- * beats *best_sj; stops at the first of at least SJ_ACCEPT. */
+ * out their angles (stopped where it folds a curved boundary quad), then
+ * held where they are, then not relaxed at all; each attempt raised to
+ * order Q and kept in *out when its smallest scaled Jacobian beats
+ * *best_sj; stops at the first of at least SJ_ACCEPT.  The second is the
+ * first again where there is no singular point to hold and the first did
+ * not fold: skipped. */
 static sq_status relax_attempts(const cad_face *face, const sq_face_info *info, qm_vmesh *v,
                                 const double *start, const int *keep,
                                 const sq_mesher_options *opt, sq_relax_work **work,
                                 double *best_sj, sq_quad_mesh **out, sq_error *err)
 {
     sq_status st = SQ_OK;
+    int folded = 0;
     for (int attempt = 0; attempt < 3 && st == SQ_OK && *best_sj < SJ_ACCEPT; attempt++) {
-        if (attempt == 1 && !qm_has_free_singular(v, keep)) continue;
+        if (attempt == 1 && !folded && !qm_has_free_singular(v, keep)) continue;
         sq_quad_mesh *m = NULL;
         memcpy(v->xy, start, sizeof(double) * 2 * (size_t)v->nv);
-        int folded = 0;
+        folded = 0;
         if (attempt < 2)
             st = qm_relax(face, info, v, keep, attempt == 0, 0, opt, work, &folded, err);
         if (folded) continue;
