@@ -19,6 +19,32 @@
 #define NV 4
 #define ID(i, j) ((j) * (NU + 1) + (i))
 
+/* m relaxed with its own work: the Newton steps taken, the compass
+ * search's polls in *polls (sq_relax_work_stats). */
+static int relaxed_steps(const cad_face *f, sq_relax_mesh *m, long *polls)
+{
+    sq_relax_work *work = NULL;
+    sq_error err;
+    SQ_TEST_OK(sq_quad_relax(f, m, &work, &err), err);
+    int steps;
+    sq_relax_work_stats(work, &steps, polls);
+    sq_relax_work_free(&work);
+    return steps;
+}
+
+/* square_hole's hole edge: the one through (0.75, 0.5), -1 if none. */
+static int hole_edge(const cad_face *f)
+{
+    int hole = -1;
+    sq_error err;
+    for (int e = 0; e < cad_face_num_edges(f); e++) {
+        double d;
+        SQ_TEST_OK(cad_face_edge_project(f, e, (double[2]){0.75, 0.5}, NULL, NULL, &d, &err), err);
+        if (d < 1e-9) hole = e;
+    }
+    return hole;
+}
+
 /* stop_on_fold on square_hole (hole r = 0.25 at (0.5, 0.5)): a ring of four
  * quads around the hole, its inner vertices sliding on the circle (turned
  * by `turn` from the quarter points and shaken), its outer ones at radius r
@@ -31,7 +57,7 @@
 static int ring(const cad_face *f, double r, double turn, int hold, int want)
 {
     double xy[16];
-    int quad[16], tag[16], fixed[8], hole = -1, fails = 0;
+    int quad[16], tag[16], fixed[8], hole = hole_edge(f), fails = 0;
     sq_error err;
     static const double shake[4] = {0.09, -0.05, 0.07, -0.03};
     for (int k = 0; k < 4; k++) {
@@ -40,11 +66,6 @@ static int ring(const cad_face *f, double r, double turn, int hold, int want)
         xy[8 + 2 * k] = 0.5 + r * cos(b), xy[8 + 2 * k + 1] = 0.5 + r * sin(b);
         fixed[k] = 0;
         fixed[4 + k] = hold;
-    }
-    for (int e = 0; e < cad_face_num_edges(f); e++) {
-        double d;
-        SQ_TEST_OK(cad_face_edge_project(f, e, (double[2]){0.75, 0.5}, NULL, NULL, &d, &err), err);
-        if (d < 1e-9) hole = e;
     }
     fails += sq_check_int("t613 ring", "hole edge found", hole >= 0, 1);
     for (int k = 0; k < 4; k++) {
@@ -136,13 +157,8 @@ static int ogrid(const cad_face *f)
                 quad[4 * q + k] = c[k], tag[4 * q + k] = k == 1 && l == OM - 1 ? 0 : -1;
         }
     sq_relax_mesh m = {nv, nq, xy, quad, tag, fixed};
-    sq_relax_work *work = NULL;
-    sq_error err;
-    SQ_TEST_OK(sq_quad_relax(f, &m, &work, &err), err);
-    int steps;
     long polls;
-    sq_relax_work_stats(work, &steps, &polls);
-    sq_relax_work_free(&work);
+    const int steps = relaxed_steps(f, &m, &polls);
     fprintf(stderr, "t613 ogrid: %d quads, %d Newton steps\n", nq, steps);
     fails += sq_check_int("t613 ogrid", "Newton steps <= 16", steps <= 16, 1);
     const int corner[4] = {0, ON, nc - 1, ON * (ON + 1)};
@@ -177,13 +193,7 @@ static int ogrid(const cad_face *f)
 static int bend(const cad_face *f)
 {
     double xy[2 * 3 * BK];
-    int quad[4 * 2 * BK], tag[4 * 2 * BK], fixed[3 * BK], hole = -1, fails = 0;
-    sq_error err;
-    for (int e = 0; e < cad_face_num_edges(f); e++) {
-        double d;
-        SQ_TEST_OK(cad_face_edge_project(f, e, (double[2]){0.75, 0.5}, NULL, NULL, &d, &err), err);
-        if (d < 1e-9) hole = e;
-    }
+    int quad[4 * 2 * BK], tag[4 * 2 * BK], fixed[3 * BK], hole = hole_edge(f), fails = 0;
     fails += sq_check_int("t613 bend", "hole edge found", hole >= 0, 1);
     for (int p = 0; p < BK; p++) {
         const double a = 2.0 * M_PI * p / BK, c = cos(a), s = sin(a);
@@ -206,12 +216,8 @@ static int bend(const cad_face *f)
                 quad[4 * q + k] = c[k], tag[4 * q + k] = l == 0 && k == 3 ? hole : -1;
         }
     sq_relax_mesh m = {3 * BK, 2 * BK, xy, quad, tag, fixed};
-    sq_relax_work *work = NULL;
-    SQ_TEST_OK(sq_quad_relax(f, &m, &work, &err), err);
-    int steps;
     long polls;
-    sq_relax_work_stats(work, &steps, &polls);
-    sq_relax_work_free(&work);
+    const int steps = relaxed_steps(f, &m, &polls);
     fprintf(stderr, "t613 bend: %d Newton steps\n", steps);
     fails += sq_check_int("t613 bend", "Newton steps <= 14", steps <= 14, 1);
     int concave = 0;
@@ -263,7 +269,6 @@ static int strip(const cad_face *f)
     static double xy[2 * NVS];
     static int quad[4 * 6 * N], tag[4 * 6 * N], fixed[NVS];
     const double h = 1.0 / N, w = h / 25.0, y0 = 0.5;
-    sq_error err;
     for (int j = 0; j <= N; j++) {
         xy[2 * (NB + j)] = xy[2 * (NT + j)] = j * h;
         xy[2 * (NB + j) + 1] = y0;
@@ -306,12 +311,8 @@ static int strip(const cad_face *f)
             xy[2 * i + 1] += 0.03 * w * cos(5.0 * i);
         }
     sq_relax_mesh m = {NVS, nq, xy, quad, tag, fixed};
-    sq_relax_work *work = NULL;
-    SQ_TEST_OK(sq_quad_relax(f, &m, &work, &err), err);
-    int steps;
     long polls;
-    sq_relax_work_stats(work, &steps, &polls);
-    sq_relax_work_free(&work);
+    const int steps = relaxed_steps(f, &m, &polls);
     int convex = 1;
     for (int q = 0; q < nq; q++)
         for (int k = 0; k < 4; k++) {
