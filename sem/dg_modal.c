@@ -104,43 +104,57 @@ sq_status sem_modal_geometry(const sem_tri_mesh *mesh, double **out, sq_error *e
     const int go = mesh->order, nm = sem_tri_num_nodes(go), nn = mesh->nodes_per_tri;
     sem_tri_lagrange *lag = NULL;
     sem_tri_quad *q = NULL;
-    double *lq = NULL, *pq = NULL, *gm = NULL;
+    double *lq = NULL, *pq = NULL, *gm = NULL, *xq = NULL;
     sq_status st = SQ_OK;
     if ((st = sem_tri_lagrange_create(go, &lag, err)) != SQ_OK) goto done;
     /* x phi_m has degree 2*order: the projection is exact. */
     if ((st = sem_tri_quad_create(2 * go, &q, err)) != SQ_OK) goto done;
-    lq = malloc(sizeof(double) * (size_t)q->npts * (size_t)nn);
-    pq = malloc(sizeof(double) * (size_t)q->npts * (size_t)nm);
+    const int nq = q->npts;
+    lq = malloc(sizeof(double) * (size_t)nq * (size_t)nn);
+    pq = malloc(sizeof(double) * (size_t)nq * (size_t)nm);
+    xq = malloc(sizeof(double) * 2 * (size_t)nq);
     gm = calloc(2 * (size_t)nm * (size_t)mesh->ntris + 1, sizeof(double));
-    if (!lq || !pq || !gm) {
+    if (!lq || !pq || !xq || !gm) {
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "modal_geometry: out of memory (%d triangles)",
                      mesh->ntris);
         goto done;
     }
-    for (int k = 0; k < q->npts; ++k) {
-        sem_tri_lagrange_eval(lag, q->rs[2 * k], q->rs[2 * k + 1], lq + (size_t)k * nn, NULL, NULL);
+    /* lq node by node (lq[n nq + k] = l_n at point k): the positions at all
+     * points are then sums over the nodes whose inner loop runs over the
+     * points, independent sums that vectorise, where a sum per point is a
+     * chain of dependent additions */
+    for (int k = 0; k < nq; ++k) {
+        double l[SEM_MAX_MODES];
+        sem_tri_lagrange_eval(lag, q->rs[2 * k], q->rs[2 * k + 1], l, NULL, NULL);
+        for (int n = 0; n < nn; ++n) lq[(size_t)n * nq + k] = l[n];
         sem_tri_dubiner(go, q->rs[2 * k], q->rs[2 * k + 1], pq + (size_t)k * nm, NULL, NULL);
         for (int m = 0; m < nm; ++m) pq[(size_t)k * nm + m] *= q->w[k];
     }
+    double *restrict X = xq, *restrict Y = xq + nq;
     for (int e = 0; e < mesh->ntris; ++e) {
         const double *g = mesh->gxy + 2 * (size_t)nn * e;
         double *o = gm + 2 * (size_t)nm * e;
-        for (int k = 0; k < q->npts; ++k) {
-            double x = 0.0, y = 0.0;
-            const double *l = lq + (size_t)k * nn;
-            for (int n = 0; n < nn; ++n) {
-                x += g[2 * n] * l[n];
-                y += g[2 * n + 1] * l[n];
+        /* each point's sum in node order, as a sum per point adds them */
+        for (int k = 0; k < nq; ++k) X[k] = Y[k] = 0.0;
+        for (int n = 0; n < nn; ++n) {
+            const double gx = g[2 * n], gy = g[2 * n + 1];
+            const double *restrict l = lq + (size_t)n * nq;
+            for (int k = 0; k < nq; ++k) {
+                X[k] += gx * l[k];
+                Y[k] += gy * l[k];
             }
+        }
+        for (int k = 0; k < nq; ++k) {
             const double *w = pq + (size_t)k * nm;
             for (int m = 0; m < nm; ++m) {
-                o[2 * m] += x * w[m];
-                o[2 * m + 1] += y * w[m];
+                o[2 * m] += X[k] * w[m];
+                o[2 * m + 1] += Y[k] * w[m];
             }
         }
     }
 done:
     free(lq);
+    free(xq);
     free(pq);
     sem_tri_quad_free(&q);
     sem_tri_lagrange_free(&lag);
