@@ -110,36 +110,51 @@ void sem_locator_free(sem_locator **loc)
 
 static int clampi(long v, int lo, int hi) { return v < lo ? lo : v > hi ? hi : (int)v; }
 
-/* The geometry's modes and derivatives (3 ngm per point) at the points
- * (i, j)/ns, i + j <= ns, of the lattice of order ns = 2 go + 2 that samples
- * curved elements: tabulated once for all of them. */
-static double *lattice_modes(const sem_locator *L)
+/* The geometry's modes at the points (i, j)/ns, i + j <= ns, of the
+ * lattice of order ns = 2 go + 2 that samples curved elements, mode by mode
+ * (lat[m nlat + k]): tabulated once for all of them.  Only the values: the
+ * boxes need the positions alone (a third of the table: it stays below
+ * malloc's mmap threshold, no fresh pages to fault in per locator). */
+static double *lattice_modes(const sem_locator *L, int nlat)
 {
     const int ns = 2 * L->go + 2, ngm = L->ngm;
-    double *lat = malloc(sizeof(double) * 3 * (size_t)ngm * sem_tri_num_nodes(ns));
+    double *lat = malloc(sizeof(double) * (size_t)ngm * nlat);
     if (!lat) return NULL;
-    double *t = lat;
+    int k = 0;
     for (int j = 0; j <= ns; ++j)
-        for (int i = 0; i + j <= ns; ++i, t += 3 * ngm)
-            sem_dubiner_tab_eval(&L->tab, (double)i / ns, (double)j / ns, t, t + ngm, t + 2 * ngm);
+        for (int i = 0; i + j <= ns; ++i, ++k) {
+            double phi[SEM_MAX_MODES];
+            sem_dubiner_tab_eval(&L->tab, (double)i / ns, (double)j / ns, phi, NULL, NULL);
+            for (int m = 0; m < ngm; ++m) lat[(size_t)m * nlat + k] = phi[m];
+        }
     return lat;
 }
 
-/* Grow box b by element e's map on the lattice (sem_locator_map's sums);
- * nonzero if a point is not finite. */
-static int curved_box(const sem_locator *L, int e, const double *lat, int nlat, double b[4])
+/* Grow box b by element e's map on the lattice; nonzero if a point is not
+ * finite.  The positions are sem_locator_map's sums, mode by mode in the
+ * same order, for all points at once (independent sums that vectorise);
+ * xy: 2 nlat doubles of work space. */
+static int curved_box(const sem_locator *L, int e, const double *lat, int nlat, double *xy,
+                      double b[4])
 {
     const int ngm = L->ngm;
     const double *gm = L->gm + 2 * (size_t)ngm * e;
+    double *restrict X = xy, *restrict Y = xy + nlat;
+    for (int k = 0; k < nlat; ++k) X[k] = Y[k] = 0.0;
+    for (int m = 0; m < ngm; ++m) {
+        const double gx = gm[2 * m], gy = gm[2 * m + 1];
+        const double *restrict t = lat + (size_t)m * nlat;
+        for (int k = 0; k < nlat; ++k) {
+            X[k] += gx * t[k];
+            Y[k] += gy * t[k];
+        }
+    }
     for (int k = 0; k < nlat; ++k) {
-        const double *t = lat + 3 * (size_t)ngm * k;
-        double x[2];
-        sem_modal_map(ngm, gm, t, t + ngm, t + 2 * ngm, x, NULL);
-        if (!(isfinite(x[0]) && isfinite(x[1]))) return 1;
-        b[0] = fmin(b[0], x[0]);
-        b[1] = fmax(b[1], x[0]);
-        b[2] = fmin(b[2], x[1]);
-        b[3] = fmax(b[3], x[1]);
+        if (!(isfinite(X[k]) && isfinite(Y[k]))) return 1;
+        b[0] = fmin(b[0], X[k]);
+        b[1] = fmax(b[1], X[k]);
+        b[2] = fmin(b[2], Y[k]);
+        b[3] = fmax(b[3], Y[k]);
     }
     return 0;
 }
@@ -153,7 +168,7 @@ sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_err
     sem_locator *L = calloc(1, sizeof *L);
     if (!L) return SQ_FAIL(err, SQ_ERR_INTERNAL, "locator_create: out of memory");
     sq_status st;
-    double *lat = NULL;
+    double *lat = NULL, *xy = NULL;
     L->mesh = mesh;
     L->go = mesh->order;
     L->ngm = sem_tri_num_nodes(L->go);
@@ -167,7 +182,7 @@ sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_err
         goto fail;
     }
     const int nlat = sem_tri_num_nodes(2 * L->go + 2); /* sample lattice of curved elements */
-    if (!(lat = lattice_modes(L))) {
+    if (!(lat = lattice_modes(L, nlat)) || !(xy = malloc(sizeof(double) * 2 * (size_t)nlat))) {
         st = SQ_FAIL(err, SQ_ERR_INTERNAL, "locator_create: out of memory");
         goto fail;
     }
@@ -207,7 +222,7 @@ sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_err
             a[5] = J[0] / det;
             L->is_aff[e] = 1;
         } else {
-            if (curved_box(L, e, lat, nlat, b)) {
+            if (curved_box(L, e, lat, nlat, xy, b)) {
                 st = SQ_FAIL(err, SQ_ERR_USAGE, "locator_create: element %d has non-finite nodes",
                              e);
                 goto fail;
@@ -231,7 +246,8 @@ sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_err
         by1 = fmax(by1, b[3]);
     }
     free(lat);
-    lat = NULL;
+    free(xy);
+    lat = xy = NULL;
     /* grid of about one cell per element */
     const double W = bx1 - bx0, H = by1 - by0;
     L->nx = clampi(lround(ceil(sqrt((double)nt * W / H))), 1, 4096);
@@ -280,6 +296,7 @@ sq_status sem_locator_create(const sem_tri_mesh *mesh, sem_locator **out, sq_err
     return SQ_OK;
 fail:
     free(lat);
+    free(xy);
     sem_locator_free(&L);
     return st;
 }
