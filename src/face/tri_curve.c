@@ -1,8 +1,6 @@
 #include "tri_curve.h"
 
 #include "gauss.h"
-#include "tri_geom.h"
-#include "tri_lagrange.h"
 #include "tri_nodes.h"
 
 #include <stdlib.h>
@@ -41,11 +39,10 @@ static sq_status edge_displacement(const cad_face *face, const sem_tri_mesh *m, 
 }
 
 sq_status sq_tri_curve(const cad_face *face, sem_tri_mesh *mesh, const double *bs,
-                       double *jac_min, double *area, sq_error *err)
+                       const sem_tri_geom_sampler *sampler, double *jac_min, double *area,
+                       sq_error *err)
 {
     int P = mesh->order, nn = mesh->nodes_per_tri;
-    sem_tri_lagrange *lag = NULL;
-    sem_tri_geom_sampler *sampler = NULL;
     double *rs = malloc(sizeof(double) * 2 * (size_t)nn);
     double *xi = malloc(sizeof(double) * (size_t)(P + 1));
     double *w = malloc(sizeof(double) * (size_t)(P + 1));
@@ -58,8 +55,6 @@ sq_status sq_tri_curve(const cad_face *face, sem_tri_mesh *mesh, const double *b
     }
     if ((st = sem_tri_nodes(P, rs, err)) != SQ_OK) goto done;
     if (P >= 1 && (st = sem_gauss_lobatto(P + 1, xi, w, err)) != SQ_OK) goto done;
-    if ((st = sem_tri_lagrange_create(P, &lag, err)) != SQ_OK) goto done;
-    if ((st = sem_tri_geom_sampler_create(lag, &sampler, err)) != SQ_OK) goto done;
     *area = 0.0;
     for (int e = 0; e < mesh->ntris && st == SQ_OK; e++) {
         const int *v = &mesh->tri[3 * e];
@@ -93,8 +88,6 @@ sq_status sq_tri_curve(const cad_face *face, sem_tri_mesh *mesh, const double *b
         *area += a;
     }
 done:
-    sem_tri_geom_sampler_free(&sampler);
-    sem_tri_lagrange_free(&lag);
     free(rs);
     free(xi);
     free(w);

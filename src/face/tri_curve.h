@@ -4,6 +4,7 @@
 #define SQ_TRI_CURVE_H
 
 #include "cad.h"
+#include "tri_geom.h"
 #include "tri_mesh.h"
 
 /* Fill mesh->gxy (mesh->order = P) from the corner vertices: interior edges
@@ -11,8 +12,11 @@
  * length bs[6e+2k] to bs[6e+2k+1], its nodes at the Gauss–Lobatto–Legendre
  * arc-length positions, and the displacement blended into the element.
  * On return jac_min[e] holds each element's scaled Jacobian and *area the
- * mesh's area (the elements' det J integrated), from one sampling. */
+ * mesh's area (the elements' det J integrated), from one sampling by
+ * sampler, which the caller made from the Lagrange basis of order P (once
+ * for all its meshes of that order). */
 sq_status sq_tri_curve(const cad_face *face, sem_tri_mesh *mesh, const double *bs,
-                       double *jac_min, double *area, sq_error *err);
+                       const sem_tri_geom_sampler *sampler, double *jac_min, double *area,
+                       sq_error *err);
 
 #endif

@@ -524,9 +524,11 @@ static double tri_min_angle(const double *a, const double *b, const double *c)
 }
 
 /* Build the order-P mesh from the final CDT, whose boundary vertices are
- * exactly the polygon's points.  *nbad counts elements whose scaled Jacobian
- * is below MIN_SCALED_JAC; their boundary segments got midpoints in b. */
-static sq_status build_mesh(const cad_face *face, const sq_tri_options *opt, const bpoly *p,
+ * exactly the polygon's points, its elements measured by sampler (order P).
+ * *nbad counts elements whose scaled Jacobian is below MIN_SCALED_JAC;
+ * their boundary segments got midpoints in b. */
+static sq_status build_mesh(const cad_face *face, const sq_tri_options *opt,
+                            const sem_tri_geom_sampler *sampler, const bpoly *p,
                             const cad_cdt_output *o, bdisc *b, sq_triangulation *out, int *nbad,
                             sq_error *err)
 {
@@ -579,7 +581,7 @@ static sq_status build_mesh(const cad_face *face, const sq_tri_options *opt, con
             out->bs[6 * e + 2 * k + 1] = seg_end_s(face, p, i);
         }
     }
-    if ((st = sq_tri_curve(face, m, out->bs, jac, &out->area, err)) != SQ_OK) goto done;
+    if ((st = sq_tri_curve(face, m, out->bs, sampler, jac, &out->area, err)) != SQ_OK) goto done;
     *nbad = 0;
     out->min_scaled_jacobian = HUGE_VAL;
     for (int e = 0; e < m->ntris && st == SQ_OK; e++) {
@@ -620,11 +622,16 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
         size = sq_tri_size(opt, info.area);
         sq_face_info_free(&info);
     }
-    size_ctx sc;
+    size_ctx sc = {0};
     bdisc b = {0};
     bpoly p = {0};
     cad_cdt_output o = {0};
-    sq_status st = size_ctx_init(&sc, opt, size, err);
+    /* the det J samples of order opt->order, tabulated once for every round */
+    sem_tri_lagrange *lag = NULL;
+    sem_tri_geom_sampler *sampler = NULL;
+    sq_status st = sem_tri_lagrange_create(opt->order, &lag, err);
+    if (st == SQ_OK) st = sem_tri_geom_sampler_create(lag, &sampler, err);
+    if (st == SQ_OK) st = size_ctx_init(&sc, opt, size, err);
     if (st == SQ_OK) st = bdisc_initial(face, &sc, opt->max_turn_deg * M_PI / 180.0, &b, err);
     if (st == SQ_OK && opt->edge_points) st = bdisc_prescribed(opt->edge_points, &b, err);
     int round = 0, done = 0;
@@ -638,7 +645,7 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
         if ((st = untangle(face, opt, &p, &b, err)) != SQ_OK) break;
         if ((st = cdt_round(face, opt, &sc, &p, &b, &o, &nsplit, err)) != SQ_OK) break;
         if (nsplit) continue;
-        if ((st = build_mesh(face, opt, &p, &o, &b, out, &nbad, err)) != SQ_OK) break;
+        if ((st = build_mesh(face, opt, sampler, &p, &o, &b, out, &nbad, err)) != SQ_OK) break;
         done = nbad == 0;
     }
     if (st == SQ_OK && !done)
@@ -648,6 +655,8 @@ sq_status sq_triangulate(const cad_face *face, const sq_tri_options *opt, sq_tri
                      MAX_ROUNDS, out->mesh ? out->min_scaled_jacobian : 0.0);
     if (st == SQ_OK) out->size = size;
     if (st != SQ_OK) sq_triangulation_free(out);
+    sem_tri_geom_sampler_free(&sampler);
+    sem_tri_lagrange_free(&lag);
     bpoly_free(&p);
     cad_cdt_output_free(&o);
     bdisc_free(&b);
