@@ -119,10 +119,7 @@ sq_status sem_modal_geometry(const sem_tri_mesh *mesh, double **out, sq_error *e
                      mesh->ntris);
         goto done;
     }
-    /* lq node by node (lq[n nq + k] = l_n at point k): the positions at all
-     * points are then sums over the nodes whose inner loop runs over the
-     * points, independent sums that vectorise, where a sum per point is a
-     * chain of dependent additions */
+    /* lq node by node (lq[n nq + k] = l_n at point k) for sem_map_points */
     for (int k = 0; k < nq; ++k) {
         double l[SEM_MAX_MODES];
         sem_tri_lagrange_eval(lag, q->rs[2 * k], q->rs[2 * k + 1], l, NULL, NULL);
@@ -130,20 +127,10 @@ sq_status sem_modal_geometry(const sem_tri_mesh *mesh, double **out, sq_error *e
         sem_tri_dubiner(go, q->rs[2 * k], q->rs[2 * k + 1], pq + (size_t)k * nm, NULL, NULL);
         for (int m = 0; m < nm; ++m) pq[(size_t)k * nm + m] *= q->w[k];
     }
-    double *restrict X = xq, *restrict Y = xq + nq;
+    const double *X = xq, *Y = xq + nq;
     for (int e = 0; e < mesh->ntris; ++e) {
-        const double *g = mesh->gxy + 2 * (size_t)nn * e;
         double *o = gm + 2 * (size_t)nm * e;
-        /* each point's sum in node order, as a sum per point adds them */
-        for (int k = 0; k < nq; ++k) X[k] = Y[k] = 0.0;
-        for (int n = 0; n < nn; ++n) {
-            const double gx = g[2 * n], gy = g[2 * n + 1];
-            const double *restrict l = lq + (size_t)n * nq;
-            for (int k = 0; k < nq; ++k) {
-                X[k] += gx * l[k];
-                Y[k] += gy * l[k];
-            }
-        }
+        sem_map_points(nn, mesh->gxy + 2 * (size_t)nn * e, lq, nq, xq, xq + nq);
         for (int k = 0; k < nq; ++k) {
             const double *w = pq + (size_t)k * nm;
             for (int m = 0; m < nm; ++m) {

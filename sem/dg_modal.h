@@ -72,4 +72,23 @@ static inline double sem_modal_map(int nmodes, const double *gm, const double *p
     return xr * ys - xs * yr;
 }
 
+/* x[k], y[k] at npts points of a map with interleaved coefficients g
+ * (2 nb) on nb functions tabulated function by function (t[i npts + k]):
+ * each point's sums in function order, as a sum per point adds them, for
+ * all points at once: independent sums that vectorise, where one point's
+ * sum is a chain of dependent additions. */
+static inline void sem_map_points(int nb, const double *g, const double *t, int npts,
+                                  double *restrict x, double *restrict y)
+{
+    for (int k = 0; k < npts; ++k) x[k] = y[k] = 0.0;
+    for (int i = 0; i < nb; ++i) {
+        const double gx = g[2 * i], gy = g[2 * i + 1];
+        const double *restrict ti = t + (size_t)i * npts;
+        for (int k = 0; k < npts; ++k) {
+            x[k] += gx * ti[k];
+            y[k] += gy * ti[k];
+        }
+    }
+}
+
 #endif

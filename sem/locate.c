@@ -131,24 +131,13 @@ static double *lattice_modes(const sem_locator *L, int nlat)
 }
 
 /* Grow box b by element e's map on the lattice; nonzero if a point is not
- * finite.  The positions are sem_locator_map's sums, mode by mode in the
- * same order, for all points at once (independent sums that vectorise);
- * xy: 2 nlat doubles of work space. */
+ * finite.  The positions are sem_locator_map's sums, in its mode order
+ * (sem_map_points); xy: 2 nlat doubles of work space. */
 static int curved_box(const sem_locator *L, int e, const double *lat, int nlat, double *xy,
                       double b[4])
 {
-    const int ngm = L->ngm;
-    const double *gm = L->gm + 2 * (size_t)ngm * e;
-    double *restrict X = xy, *restrict Y = xy + nlat;
-    for (int k = 0; k < nlat; ++k) X[k] = Y[k] = 0.0;
-    for (int m = 0; m < ngm; ++m) {
-        const double gx = gm[2 * m], gy = gm[2 * m + 1];
-        const double *restrict t = lat + (size_t)m * nlat;
-        for (int k = 0; k < nlat; ++k) {
-            X[k] += gx * t[k];
-            Y[k] += gy * t[k];
-        }
-    }
+    const double *X = xy, *Y = xy + nlat;
+    sem_map_points(L->ngm, L->gm + 2 * (size_t)L->ngm * e, lat, nlat, xy, xy + nlat);
     for (int k = 0; k < nlat; ++k) {
         if (!(isfinite(X[k]) && isfinite(Y[k]))) return 1;
         b[0] = fmin(b[0], X[k]);
