@@ -129,15 +129,20 @@ sq_status sem_modal_geometry(const sem_tri_mesh *mesh, double **out, sq_error *e
     }
     const double *X = xq, *Y = xq + nq;
     for (int e = 0; e < mesh->ntris; ++e) {
-        double *o = gm + 2 * (size_t)nm * e;
         sem_map_points(nn, mesh->gxy + 2 * (size_t)nn * e, lq, nq, xq, xq + nq);
+        /* the coefficients summed point by point, x and y apart (contiguous
+         * sums that vectorise), then interleaved */
+        double ox[SEM_MAX_MODES] = {0}, oy[SEM_MAX_MODES] = {0};
         for (int k = 0; k < nq; ++k) {
-            const double *w = pq + (size_t)k * nm;
+            const double *restrict w = pq + (size_t)k * nm;
+            const double xk = X[k], yk = Y[k];
             for (int m = 0; m < nm; ++m) {
-                o[2 * m] += X[k] * w[m];
-                o[2 * m + 1] += Y[k] * w[m];
+                ox[m] += xk * w[m];
+                oy[m] += yk * w[m];
             }
         }
+        double *o = gm + 2 * (size_t)nm * e;
+        for (int m = 0; m < nm; ++m) o[2 * m] = ox[m], o[2 * m + 1] = oy[m];
     }
 done:
     free(lq);
