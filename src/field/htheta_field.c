@@ -62,19 +62,47 @@ static void edge_point(int k, double u, double rs[2])
     else rs[0] = 0.0, rs[1] = 1.0 - u;
 }
 
+/* θ minus the CAD edge's tangent angle at the points u = 1/4, 1/2, 3/4 of
+ * every boundary element edge on loop l, in d (*nd of them) */
+static sq_status boundary_deviations(const cad_face *face, const sq_htheta *f, int l, double *d,
+                                     int *nd, sq_error *err)
+{
+    const sem_tri_mesh *m = f->tri.mesh;
+    *nd = 0;
+    for (int h = 0; h < 3 * m->ntris; h++) {
+        if (m->neigh[h] >= 0 || cad_face_edge_loop(face, m->btag[h]) != l) continue;
+        for (int q = 1; q <= 3; q++) {
+            double rs[2], x[2], s, tan[2];
+            edge_point(h % 3, 0.25 * q, rs);
+            const double th = sq_theta_field_eval_ref(&f->theta, h / 3, rs[0], rs[1], NULL);
+            sem_locator_map(f->loc, h / 3, rs[0], rs[1], x, NULL);
+            SQ_TRY(cad_face_edge_project(face, m->btag[h], x, &s, NULL, NULL, err));
+            SQ_TRY(cad_face_edge_eval(face, m->btag[h], s, NULL, tan, NULL, err));
+            d[(*nd)++] = th - atan2(tan[1], tan[0]);
+        }
+    }
+    return SQ_OK;
+}
+
 /* jumps, turning and alignment of every loop */
 static sq_status loop_checks(const cad_face *face, sq_htheta *f, sq_error *err)
 {
-    const sem_tri_mesh *m = f->tri.mesh;
-    for (int l = 0; l < f->nloops; l++) {
+    /* the deviations once per loop for both the mean and the spread */
+    double *d = malloc(sizeof(double) * (9 * (size_t)f->tri.mesh->ntris + 1));
+    if (!d) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    sq_status st = SQ_OK;
+    for (int l = 0; l < f->nloops && st == SQ_OK; l++) {
         sq_htheta_loop *L = &f->loops[l];
         L->loop = l;
         double kappa = 0.0, corner_turn = 0.0, corner_s = 0.0;
-        for (int k = 0; k < cad_face_loop_num_edges(face, l); k++) {
+        for (int k = 0; k < cad_face_loop_num_edges(face, l) && st == SQ_OK; k++) {
             double t;
-            SQ_TRY(edge_turning(face, cad_face_loop_first_edge(face, l) + k, &t, err));
+            st = edge_turning(face, cad_face_loop_first_edge(face, l) + k, &t, err);
             kappa += t;
         }
+        int nd = 0;
+        if (st == SQ_OK) st = boundary_deviations(face, f, l, d, &nd, err);
+        if (st != SQ_OK) break;
         for (int i = 0; i < f->info.nvertices; i++) {
             const sq_vertex *v = &f->info.vertices[i];
             if (v->loop != l) continue;
@@ -89,30 +117,17 @@ static sq_status loop_checks(const cad_face *face, sq_htheta *f, sq_error *err)
             L->jump = sq_theta_jump_around_loop(&f->theta, f->vloops, l);
         }
         double s4 = 0.0, c4 = 0.0;
-        for (int pass = 0; pass < 2; pass++) {
-            if (pass == 1) L->misalignment = 0.25 * atan2(s4, c4); /* circular mean of 4δ */
-            for (int h = 0; h < 3 * m->ntris; h++) {
-                if (m->neigh[h] >= 0 || cad_face_edge_loop(face, m->btag[h]) != l) continue;
-                for (int q = 1; q <= 3; q++) {
-                    double rs[2], x[2], s, tan[2];
-                    edge_point(h % 3, 0.25 * q, rs);
-                    const double th = sq_theta_field_eval_ref(&f->theta, h / 3, rs[0], rs[1], NULL);
-                    sem_locator_map(f->loc, h / 3, rs[0], rs[1], x, NULL);
-                    SQ_TRY(cad_face_edge_project(face, m->btag[h], x, &s, NULL, NULL, err));
-                    SQ_TRY(cad_face_edge_eval(face, m->btag[h], s, NULL, tan, NULL, err));
-                    const double d = th - atan2(tan[1], tan[0]);
-                    if (pass == 0) {
-                        s4 += sin(4.0 * d);
-                        c4 += cos(4.0 * d);
-                    } else {
-                        L->spread = fmax(L->spread, fabs(wrap_quarter(d - L->misalignment)));
-                    }
-                }
-            }
+        for (int i = 0; i < nd; i++) {
+            s4 += sin(4.0 * d[i]);
+            c4 += cos(4.0 * d[i]);
         }
+        L->misalignment = 0.25 * atan2(s4, c4); /* circular mean of 4δ */
+        for (int i = 0; i < nd; i++)
+            L->spread = fmax(L->spread, fabs(wrap_quarter(d[i] - L->misalignment)));
         L->aligned = fabs(L->misalignment) <= f->align_tol;
     }
-    return SQ_OK;
+    free(d);
+    return st;
 }
 
 /* Element sizes with the grading at the first np extra points (the imposed
