@@ -884,11 +884,18 @@ sq_status cad_face_edge_project(const cad_face *face, int edge, const double p[2
         double sf = s_of_u(e, best_u);
         double st = std::min(e.length, std::max(0.0, e.reversed ? e.length - sf : sf));
         if (s) *s = st;
+        // the foot only when asked for, or for the distance across a gap:
+        // most callers want the arc length alone (boundary data)
+        const bool gap_dist = dist && has_gap(e);
+        if (!foot && !gap_dist) {
+            if (dist) *dist = std::sqrt(best_d2);
+            return SQ_OK;
+        }
         double q[2];
         face->eval_u(e, best_u, q, NULL, NULL);
         blend_gaps(e, st, q);
         if (foot) foot[0] = q[0], foot[1] = q[1];
-        if (dist) *dist = has_gap(e) ? std::hypot(p[0] - q[0], p[1] - q[1]) : std::sqrt(best_d2);
+        if (dist) *dist = gap_dist ? std::hypot(p[0] - q[0], p[1] - q[1]) : std::sqrt(best_d2);
         return SQ_OK;
     }
     SQCAD_CATCH(err)
