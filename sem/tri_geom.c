@@ -160,15 +160,6 @@ static double ratio_of(const sem_tri_geom_sampler *S, const double *det)
     return jmin < 0.0 ? -1.0 : 0.0;
 }
 
-/* det J integrated by the rule (the samples after the nodes) */
-static double area_of(const sem_tri_geom_sampler *S, const double *det)
-{
-    double a = 0.0;
-    for (int p = S->nn; p < S->npts; ++p)
-        a += S->w[p - S->nn] * det[p];
-    return a;
-}
-
 double sem_tri_geom_sampler_scaled_jacobian(const sem_tri_geom_sampler *S, const double *gxy)
 {
     double det[SEM_MAX_SAMPLES];
@@ -176,18 +167,14 @@ double sem_tri_geom_sampler_scaled_jacobian(const sem_tri_geom_sampler *S, const
     return ratio_of(S, det);
 }
 
-double sem_tri_geom_sampler_area(const sem_tri_geom_sampler *S, const double *gxy)
-{
-    double det[SEM_MAX_SAMPLES];
-    sample_det(S, gxy, det);
-    return area_of(S, det);
-}
-
 double sem_tri_geom_sampler_measure(const sem_tri_geom_sampler *S, const double *gxy, double *area)
 {
     double det[SEM_MAX_SAMPLES];
     sample_det(S, gxy, det);
-    *area = area_of(S, det);
+    double a = 0.0; /* the rule's points follow the nodes */
+    for (int p = S->nn; p < S->npts; ++p)
+        a += S->w[p - S->nn] * det[p];
+    *area = a;
     return ratio_of(S, det);
 }
 

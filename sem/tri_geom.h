@@ -26,12 +26,10 @@ sq_status sem_tri_geom_sampler_create(const sem_tri_lagrange *lag, sem_tri_geom_
                                       sq_error *err);
 void sem_tri_geom_sampler_free(sem_tri_geom_sampler **s); /* NULL-safe, NULLs *s */
 double sem_tri_geom_sampler_scaled_jacobian(const sem_tri_geom_sampler *s, const double *gxy);
-/* Signed area of the element: det J integrated by the sampler's rule of
- * degree 2*order (exact for straight-sided elements, spectral on curved). */
-double sem_tri_geom_sampler_area(const sem_tri_geom_sampler *s, const double *gxy);
-/* Both from one sampling of det J: the scaled Jacobian, and the area into
- * *area (the curved triangulation checks every element and sums the face's
- * area). */
+/* The scaled Jacobian and, into *area, the signed area of the element (det
+ * J integrated by the sampler's rule of degree 2*order: exact for
+ * straight-sided elements, spectral on curved), from one sampling of det J
+ * (the curved triangulation checks every element and sums the face's area). */
 double sem_tri_geom_sampler_measure(const sem_tri_geom_sampler *s, const double *gxy,
                                     double *area);
 

@@ -129,7 +129,10 @@ int main(void)
          * their order, npts U of the sums' sizes (|det J| <= 4 R^2) */
         check("sampler = scaled_jacobian", P, 0, sem_tri_geom_sampler_scaled_jacobian(S, g), sj,
               2 * n * SQ_U);
-        check("sampler area = rule on the map", P, 0, sem_tri_geom_sampler_area(S, g), area(L, g, P),
+        double sa = 0.0;
+        const double sm = sem_tri_geom_sampler_measure(S, g, &sa);
+        check("sampler measure = scaled_jacobian", P, 0, sm, sj, 2 * n * SQ_U);
+        check("sampler area = rule on the map", P, 0, sa, area(L, g, P),
               (n + 4 * P * P) * SQ_U * 4 * R * R);
         sem_tri_geom_sampler_free(&S);
         sem_tri_geom_sampler_free(&S);

@@ -649,7 +649,8 @@ static sq_status newton_direction(const sq_relax_mesh *m, relax_work *w, int fre
         st = sem_sparse_pcg(A, g, d, PCG_RTOL, exact ? PCG_MAXIT_EXACT : PCG_MAXIT, &iters,
                             &converged, err);
     /* the exact Hessian is not factored (it may be indefinite): without a
-     * solution by PCG there is no exact step, and the caller stops */
+     * solution by PCG there is no exact step (the caller goes back to
+     * projected steps or stops: tail_retreat) */
     if (st == SQ_OK && exact && !converged) {
         memset(d, 0, sizeof(double) * ((size_t)w->ndof + 1));
         converged = 1;
