@@ -127,6 +127,39 @@ static sq_status create_hessian(const sq_relax_mesh *m, relax_work *w, sq_error 
     return SQ_OK;
 }
 
+/* The motions that leave the energy (nearly) unchanged (relax_work): 1
+ * where every edge of the face is a closed circle about one centre, the
+ * rotation about it; 3 where the face is a disc (one such circle), the
+ * rotation and the disc's two other conformal automorphisms, under which
+ * Winslow's energy, the Dirichlet energy of the inverse map (Winslow 1966),
+ * changes only by its discretization; else 0.  A circle: its centres of
+ * curvature x + n / kappa (n the left normal) at ROTATION_SAMPLES points of
+ * each edge within ROTATION_TOL of its radius of c.  The edges' evaluation
+ * is exact to round-off (a circle's: 1e-15 of its radius); an edge that
+ * merely approximates a circle (a B-spline to 1e-6) is not one, and the
+ * energy is not invariant under these motions there. */
+#define ROTATION_SAMPLES 8
+#define ROTATION_TOL 1e-9
+static sq_status symmetries(const cad_face *face, relax_work *w, sq_error *err)
+{
+    w->symmetries = 0;
+    double *c = w->centre;
+    for (int e = 0; e < cad_face_num_edges(face); e++) {
+        if (!cad_face_edge_closed(face, e)) return SQ_OK;
+        const double L = cad_face_edge_length(face, e);
+        for (int k = 0; k < ROTATION_SAMPLES; k++) {
+            double x[2], t[2], kappa;
+            SQ_TRY(cad_face_edge_eval(face, e, k * L / ROTATION_SAMPLES, x, t, &kappa, err));
+            if (!(fabs(kappa) > 0.0)) return SQ_OK;
+            double ck[2] = {x[0] - t[1] / kappa, x[1] + t[0] / kappa};
+            if (e == 0 && k == 0) c[0] = ck[0], c[1] = ck[1], w->radius = 1.0 / fabs(kappa);
+            if (!(hypot(ck[0] - c[0], ck[1] - c[1]) <= ROTATION_TOL / fabs(kappa))) return SQ_OK;
+        }
+    }
+    w->symmetries = cad_face_num_edges(face) == 1 ? 3 : 1;
+    return SQ_OK;
+}
+
 /* Which vertices move and how: interior free vertices in the plane (two
  * unknowns), boundary vertices whose two boundary sides lie on one CAD edge
  * along it (one unknown, the arc length); every other vertex is fixed. */
@@ -175,9 +208,20 @@ static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_wor
     sq_status st = SQ_OK;
     w->ndof = 0;
     /* held: fixed by the caller, or on the boundary without two sides on
-     * one CAD edge; with nothing held (an annulus: no corner, no singular
-     * point) the energy does not change under a rotation along the
-     * circles, so the first boundary vertex is */
+     * one CAD edge.  With nothing held and every edge a circle about one
+     * centre (a disc, a ring: no corner, no singular point held) the energy
+     * does not change under a rotation about it, and on a disc hardly under
+     * its other conformal automorphisms (symmetries): the Newton
+     * directions are kept orthogonal to these motions (remove_symmetries),
+     * and the mesh keeps the place along them that its start gives it.
+     * Holding one boundary vertex instead left a soft mode, the rest
+     * turning about it, and the disc's automorphisms softer still: the
+     * inexact directions drifted along them and the steps then crawled
+     * back along their curved orbits (the disc at --size 0.025: turns of 3
+     * degrees a step, 24 Newton steps; 10 with the motions removed, its
+     * energy 1e-10 of itself above; half_disc: 7).  With nothing held
+     * otherwise (closed edges that are not concentric circles: no such
+     * symmetry) the first boundary vertex is held, as a safeguard. */
     char *held = malloc((size_t)m->nv + 1);
     if (!held) st = SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     int any_held = 0, first_bnd = -1;
@@ -186,7 +230,8 @@ static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_wor
         any_held |= held[i];
         if (first_bnd < 0 && nb[i] != 0) first_bnd = i;
     }
-    if (st == SQ_OK && !any_held && first_bnd >= 0) held[first_bnd] = 1;
+    if (st == SQ_OK && !any_held && first_bnd >= 0) st = symmetries(face, w, err);
+    if (st == SQ_OK && !any_held && first_bnd >= 0 && !w->symmetries) held[first_bnd] = 1;
     for (int i = 0; i < m->nv && st == SQ_OK; i++) {
         w->dof[i] = -1;
         if (held[i]) {
@@ -219,8 +264,10 @@ static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_wor
  * keeps its unknowns, held at zero) and where the sliding ones are. */
 static sq_status begin(const cad_face *face, const sq_relax_mesh *m, relax_work *w, sq_error *err)
 {
+    w->modes = w->symmetries;
     for (int i = 0; i < m->nv; i++) {
         w->var[i] = m->fixed[i] ? -1 : w->dof[i];
+        if (m->fixed[i]) w->modes = 0;
         if (w->dof[i] >= 0 && w->edge[i] >= 0)
             SQ_TRY(cad_face_edge_project(face, w->edge[i], &m->xy[2 * i], &w->s[i], NULL, NULL, err));
     }
@@ -540,6 +587,68 @@ static void corner_blocks(const double He[16], double M[6][4])
     }
 }
 
+/* Vertex p's velocity under symmetry k (relax_work) in its unknowns: the
+ * rotation about the centre, i (z - c); the disc's automorphisms
+ * z -> (z - a) / (1 - conj(a) z) at a = 0, in w = (z - c) / R: dw = b -
+ * conj(b) w^2 for b = 1 and i (tangent to the circle on it).  A sliding
+ * vertex's: the component along its tangent (the pinned unknown 0). */
+static void symmetry_velocity(const relax_work *w, const double *xy, int p, int k, double v[2])
+{
+    const double x = (xy[0] - w->centre[0]) / w->radius, y = (xy[1] - w->centre[1]) / w->radius;
+    const double R = w->radius;
+    if (k == 0) /* i w */
+        v[0] = -R * y, v[1] = R * x;
+    else if (k == 1) /* 1 - w^2 */
+        v[0] = R * (1.0 - x * x + y * y), v[1] = -2.0 * R * x * y;
+    else /* i (1 + w^2) */
+        v[0] = -2.0 * R * x * y, v[1] = R * (1.0 + x * x - y * y);
+    if (w->edge[p] < 0) return;
+    const double *t = &w->tan[2 * p];
+    v[0] = t[0] * v[0] + t[1] * v[1];
+    v[1] = 0.0;
+}
+
+/* x (unknowns) less its components along the symmetries (w->modes of
+ * them, orthonormalized by Gram-Schmidt in the unknowns' dot product; one
+ * that is nearly a combination of those before it, below 1e-12 of its
+ * squared norm, a mesh too small to tell them apart, is left out). */
+static sq_status remove_symmetries(const sq_relax_mesh *m, const relax_work *w, double *x,
+                                   sq_error *err)
+{
+    const size_t n = (size_t)w->ndof;
+    double *b = calloc(3 * n + 1, sizeof(double));
+    if (!b) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
+    for (int k = 0; k < w->modes; k++) {
+        double *bk = &b[k * n], nn = 0.0, n0 = 0.0;
+        for (int i = 0; i < m->nv; i++)
+            if (w->var[i] >= 0) symmetry_velocity(w, &m->xy[2 * i], i, k, &bk[w->var[i]]);
+        for (size_t r = 0; r < n; r++)
+            n0 += bk[r] * bk[r];
+        for (int j = 0; j < k; j++) {
+            double dot = 0.0;
+            for (size_t r = 0; r < n; r++)
+                dot += bk[r] * b[j * n + r];
+            for (size_t r = 0; r < n; r++)
+                bk[r] -= dot * b[j * n + r];
+        }
+        for (size_t r = 0; r < n; r++)
+            nn += bk[r] * bk[r];
+        if (!(nn > 1e-12 * n0)) {
+            memset(bk, 0, sizeof(double) * n);
+            continue;
+        }
+        for (size_t r = 0; r < n; r++)
+            bk[r] /= sqrt(nn);
+        double dot = 0.0;
+        for (size_t r = 0; r < n; r++)
+            dot += x[r] * bk[r];
+        for (size_t r = 0; r < n; r++)
+            x[r] -= dot * bk[r];
+    }
+    free(b);
+    return SQ_OK;
+}
+
 /* The Newton direction d: (H + shift) d = -g, H the sum of the corners'
  * projected Hessians, assembled in place in w->A.  Solved by conjugate
  * gradients preconditioned with the last factorization (made at an earlier
@@ -644,6 +753,10 @@ static sq_status newton_direction(const sq_relax_mesh *m, relax_work *w, int fre
         st = sem_sparse_add(A, i, i, 1e-8 * diag[i] + 1e-300, err);
     for (int i = 0; i < w->ndof; i++)
         g[i] = -g[i];
+    /* on a symmetric face only H's shift holds the symmetries' motions: the
+     * right-hand side and the direction are kept orthogonal to them
+     * (prepare) */
+    if (st == SQ_OK && w->modes) st = remove_symmetries(m, w, g, err);
     int iters = 0, converged = 0;
     if (st == SQ_OK && !fresh)
         st = sem_sparse_pcg(A, g, d, PCG_RTOL, exact ? PCG_MAXIT_EXACT : PCG_MAXIT, &iters,
@@ -659,6 +772,7 @@ static sq_status newton_direction(const sq_relax_mesh *m, relax_work *w, int fre
     if (st == SQ_OK && !converged) st = sem_sparse_factor(A, err);
     w->factored |= st == SQ_OK && !converged;
     if (st == SQ_OK && !converged) st = sem_sparse_solve(A, g, d, err);
+    if (st == SQ_OK && w->modes) st = remove_symmetries(m, w, d, err);
     *gd = 0.0;
     for (int i = 0; i < w->ndof; i++)
         *gd -= g[i] * d[i];

@@ -22,6 +22,13 @@ struct sq_relax_work {
     double *tan;  /* 2*nv: unit tangent of a sliding vertex */
     double *kappa; /* nv: signed curvature of its edge there (> 0 turning left) */
     int ndof;
+    /* the motions under which the energy does not change, or hardly
+     * (prepare): with every boundary vertex sliding on a circle about
+     * `centre` and none held, the rotation about it; on a disc (one
+     * circle, of `radius`) also its two other conformal automorphisms.
+     * `modes` of them, 0 where this relaxation holds a vertex (begin) */
+    int symmetries, modes;
+    double centre[2], radius;
     int *start; /* nv+1: CSR of the quads around each vertex */
     int *around;
     long *bptr, *brow; /* the Hessian's block pattern (sparse.h): moving
