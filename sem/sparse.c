@@ -353,7 +353,8 @@ static sq_status block_ordering(sem_sparse *a, sslong *perm, sq_error *err)
     if (!G) return SQ_FAIL(err, SQ_ERR_INTERNAL, "sparse_factor: out of memory (block graph)");
     memcpy(G->p, a->bptr, sizeof(sslong) * (size_t)(nb + 1));
     memcpy(G->i, a->brow, sizeof(sslong) * (size_t)nbe);
-    cholmod_factor *Lb = analyze_by(a, G, NULL, nb < NESDIS_MIN_BLOCKS ? CHOLMOD_AMD : CHOLMOD_NESDIS);
+    cholmod_factor *Lb =
+        analyze_by(a, G, NULL, nb < NESDIS_MIN_BLOCKS ? CHOLMOD_AMD : CHOLMOD_NESDIS);
     if (!Lb) Lb = cholmod_l_analyze(G, &a->cc);
     cholmod_l_free_sparse(&G, &a->cc);
     if (!Lb)

@@ -212,7 +212,7 @@ static sq_status prepare(const cad_face *face, const sq_relax_mesh *m, relax_wor
      * centre (a disc, a ring: no corner, no singular point held) the energy
      * does not change under a rotation about it, and on a disc hardly under
      * its other conformal automorphisms (symmetries): the Newton
-     * directions are kept orthogonal to these motions (remove_symmetries),
+     * directions are kept orthogonal to these motions (symmetry_basis),
      * and the mesh keeps the place along them that its start gives it.
      * Holding one boundary vertex instead left a soft mode, the rest
      * turning about it, and the disc's automorphisms softer still: the
@@ -608,16 +608,14 @@ static void symmetry_velocity(const relax_work *w, const double *xy, int p, int 
     v[1] = 0.0;
 }
 
-/* x (unknowns) less its components along the symmetries (w->modes of
- * them, orthonormalized by Gram-Schmidt in the unknowns' dot product; one
- * that is nearly a combination of those before it, below 1e-12 of its
- * squared norm, a mesh too small to tell them apart, is left out). */
-static sq_status remove_symmetries(const sq_relax_mesh *m, const relax_work *w, double *x,
-                                   sq_error *err)
+/* The symmetries' velocities at m's vertices in the unknowns (w->modes of
+ * them, 3 ndof in b), orthonormalized by Gram-Schmidt in the unknowns' dot
+ * product; one that is nearly a combination of those before it, below
+ * 1e-12 of its squared norm (a mesh too small to tell them apart), is left
+ * zero. */
+static void symmetry_basis(const sq_relax_mesh *m, const relax_work *w, double *b)
 {
     const size_t n = (size_t)w->ndof;
-    double *b = calloc(3 * n + 1, sizeof(double));
-    if (!b) return SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
     for (int k = 0; k < w->modes; k++) {
         double *bk = &b[k * n], nn = 0.0, n0 = 0.0;
         for (int i = 0; i < m->nv; i++)
@@ -633,20 +631,23 @@ static sq_status remove_symmetries(const sq_relax_mesh *m, const relax_work *w, 
         }
         for (size_t r = 0; r < n; r++)
             nn += bk[r] * bk[r];
-        if (!(nn > 1e-12 * n0)) {
-            memset(bk, 0, sizeof(double) * n);
-            continue;
-        }
         for (size_t r = 0; r < n; r++)
-            bk[r] /= sqrt(nn);
+            bk[r] = nn > 1e-12 * n0 ? bk[r] / sqrt(nn) : 0.0;
+    }
+}
+
+/* x (unknowns) less its components along the symmetries (b from
+ * symmetry_basis). */
+static void remove_symmetries(const relax_work *w, const double *b, double *x)
+{
+    const size_t n = (size_t)w->ndof;
+    for (int k = 0; k < w->modes; k++) {
         double dot = 0.0;
         for (size_t r = 0; r < n; r++)
-            dot += x[r] * bk[r];
+            dot += x[r] * b[k * n + r];
         for (size_t r = 0; r < n; r++)
-            x[r] -= dot * bk[r];
+            x[r] -= dot * b[k * n + r];
     }
-    free(b);
-    return SQ_OK;
 }
 
 /* The Newton direction d: (H + shift) d = -g, H the sum of the corners'
@@ -663,10 +664,12 @@ static sq_status newton_direction(const sq_relax_mesh *m, relax_work *w, int fre
 {
     double *g = calloc((size_t)w->ndof + 1, sizeof(double)),
            *gx = calloc(2 * (size_t)m->nv + 1, sizeof(double)),
-           *diag = calloc((size_t)w->ndof + 1, sizeof(double));
-    sq_status st = !g || !gx || !diag ? SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory")
-                   : w->factored      ? sem_sparse_reset(w->A, err)
-                                      : SQ_OK; /* the first assembly */
+           *diag = calloc((size_t)w->ndof + 1, sizeof(double)),
+           *sym = w->modes ? malloc(sizeof(double) * (3 * (size_t)w->ndof + 1)) : NULL;
+    sq_status st = !g || !gx || !diag || (w->modes && !sym)
+                       ? SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory")
+                   : w->factored ? sem_sparse_reset(w->A, err)
+                                 : SQ_OK; /* the first assembly */
     sem_sparse *A = w->A;
     fresh |= !w->factored;
     double *x = st == SQ_OK ? sem_sparse_values(A) : NULL;
@@ -756,7 +759,10 @@ static sq_status newton_direction(const sq_relax_mesh *m, relax_work *w, int fre
     /* on a symmetric face only H's shift holds the symmetries' motions: the
      * right-hand side and the direction are kept orthogonal to them
      * (prepare) */
-    if (st == SQ_OK && w->modes) st = remove_symmetries(m, w, g, err);
+    if (st == SQ_OK && w->modes) {
+        symmetry_basis(m, w, sym);
+        remove_symmetries(w, sym, g);
+    }
     int iters = 0, converged = 0;
     if (st == SQ_OK && !fresh)
         st = sem_sparse_pcg(A, g, d, PCG_RTOL, exact ? PCG_MAXIT_EXACT : PCG_MAXIT, &iters,
@@ -772,13 +778,14 @@ static sq_status newton_direction(const sq_relax_mesh *m, relax_work *w, int fre
     if (st == SQ_OK && !converged) st = sem_sparse_factor(A, err);
     w->factored |= st == SQ_OK && !converged;
     if (st == SQ_OK && !converged) st = sem_sparse_solve(A, g, d, err);
-    if (st == SQ_OK && w->modes) st = remove_symmetries(m, w, d, err);
+    if (st == SQ_OK && w->modes) remove_symmetries(w, sym, d);
     *gd = 0.0;
     for (int i = 0; i < w->ndof; i++)
         *gd -= g[i] * d[i];
     free(g);
     free(gx);
     free(diag);
+    free(sym);
     return st;
 }
 
@@ -1053,9 +1060,10 @@ static int tail_done(relax_tail *t, double E, double E1, int h, double moved, do
     done |= drop < STALL_DROP * E && drop >= 0.5 * t->last_drop;
     /* A linear tail that this does not stop yet (a ratio from EXACT_RATIO)
      * is ended by exact Newton steps.  Its cause is the projected Hessian,
-     * which overestimates the curvature along a soft mode (the disc's
-     * rotation along its circle: each decrease 1.1-1.8 times its model's,
-     * rho): with PCG run to 1e-6 the tail stays linear (0.35).  Near the
+     * which overestimates the curvature along a soft mode (measured on the
+     * disc's rotation along its circle, before its symmetries were removed
+     * (prepare): each decrease 1.1-1.8 times its model's, rho): with PCG
+     * run to 1e-6 the tail stays linear (0.35).  Near the
      * optimum the exact Hessian is definite there; its step, by PCG
      * preconditioned with the projected Hessian's factor, takes the rest
      * of the series at once, and the tests above stop the relaxation after
