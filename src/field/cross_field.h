@@ -16,8 +16,10 @@ typedef struct {
     /* Size of element elem of the triangulation the field lives on (the
      * tracer ties its step to it). */
     double (*element_size)(void *ctx, int elem);
-    /* Target mesh size at x relative to the field's scale (e^H), or 0 when
-     * the field carries no size (the guiding field). May be NULL. */
+    /* Target mesh size at x relative to the face's (e^H, scaled so that the
+     * root mean square of its inverse over the face is 1), or 0 when the
+     * field carries no size (the guiding field) or x is outside. May be
+     * NULL. */
     double (*size)(void *ctx, const double x[2], int *elem);
 } sq_cross_field;
 

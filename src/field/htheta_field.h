@@ -65,6 +65,7 @@ typedef struct {
     int nloops;
     sq_htheta_loop *loops;
     double align_tol; /* rad */
+    double size_scale; /* c of the sizes e^H c (bounded e^H; see sq_htheta_cross_field) */
     double t_triangulate, t_solve;
     /* H's solver, which θ solves with too: one matrix per triangle and
      * one factorization */
@@ -88,7 +89,9 @@ sq_status sq_htheta_check_alignment(const sq_htheta *f, int allow_misaligned, sq
 int sq_htheta_eval(const sq_htheta *f, const double x[2], int *elem, double *H, double gH[2],
                    double *theta, double gtheta[2]);
 
-/* The cross field {θ + kπ/2} with size e^H (eq. 16, 21).  Its element
+/* The cross field {θ + kπ/2} with size e^H (eq. 16, 21), bounded to a
+ * factor 4 either way and scaled by size_scale so that the root mean
+ * square of its inverse over the face is 1.  Its element
  * sizes are trace_size: the graded spokes resolve H's logarithmic and θ's
  * angular singularity for the solves only; left in, they shrink the
  * tracer's capture radius and meeting distance around exactly the points

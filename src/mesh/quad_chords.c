@@ -39,21 +39,19 @@ static int edge_segments(double len, double size)
  * stays far below a cell wherever h varies by the gradation's bound. */
 #define USER_SIZE_SUB 8
 
-/* The integrand at arc fraction t of edge e: 1 / e^H (bounded) times
- * size / h(x, tangent) where the user set sizes or boundary layers (so
- * that m[e] / size = the integral of 1/h along the edge). */
+/* The integrands at arc fraction t of edge e: *place = size / h(x,
+ * tangent) where the user set sizes or boundary layers (1 elsewhere), so
+ * that the integral of *place along the edge is its measure in units of
+ * size; *count = *place / the field's size where it carries one (e^H,
+ * bounded and scaled: cross_field.h). */
 static sq_status measure_weight(const sq_layout *L, const cad_face *face,
                                 const sq_mesher_options *o, double size, int e, double t,
-                                int *elem, double *r, sq_error *err)
+                                int *elem, double *place, double *count, sq_error *err)
 {
     double x[2], sz;
-    *r = 1.0;
+    *place = *count = 1.0;
     if (!(o->field && o->field->size) && !o->sizes) return SQ_OK;
     SQ_TRY(sq_layout_edge_point(L, face, e, t, x, err));
-    /* e^H vanishes at a valence-3 point and blows up at a valence-5 one:
-     * bounded to a factor 4 either way */
-    if (o->field && o->field->size && (sz = o->field->size(o->field->ctx, x, elem)) > 0.0)
-        *r = 1.0 / fmin(fmax(sz, 0.25), 4.0);
     if (o->sizes) {
         /* the tangent by a central difference, one-sided at the ends: read
          * only by boundary layers' walls */
@@ -64,8 +62,10 @@ static sq_status measure_weight(const sq_layout *L, const cad_face *face,
             SQ_TRY(sq_layout_edge_point(L, face, e, t1, b, err));
             tg[0] = b[0] - a[0], tg[1] = b[1] - a[1];
         }
-        *r *= size / sq_size_field_eval_dir(o->sizes, x, tg, size);
+        *place = *count = size / sq_size_field_eval_dir(o->sizes, x, tg, size);
     }
+    if (o->field && o->field->size && (sz = o->field->size(o->field->ctx, x, elem)) > 0.0)
+        *count /= sz;
     return SQ_OK;
 }
 
@@ -75,51 +75,38 @@ int qm_size_samples(const sq_mesher_options *o)
 }
 
 /* Edge measure in units of the target size: m[e] = the integral of
- * size ds / (e^H h(x, t)) along edge e (its length with neither the
- * field's size nor the user's sizes), and its cumulative values at
- * qm_size_samples + 1 equal arc-length fractions. */
-sq_status qm_size_measure(const sq_layout *L, const cad_face *face, const sq_face_info *info,
+ * size ds / (s(x) h(x, t)) along edge e, s the field's size (e^H) and h
+ * the user's (its length with neither), which counts its segments, and the
+ * cumulative values of the integral of size ds / h(x, t) at
+ * qm_size_samples + 1 equal arc-length fractions, which place its
+ * vertices.  Only the count follows s: the relaxation's energy knows
+ * the user's sizes but not e^H, and vertices spaced by e^H were moved
+ * back by up to a cell and a half (the disc at --size 0.025: 10 Newton
+ * steps and 5 factorizations from there, 7 and 2 from even spacing, to
+ * the same optimum). */
+sq_status qm_size_measure(const sq_layout *L, const cad_face *face,
                           const sq_mesher_options *o, double *m, double *cum, sq_error *err)
 {
     double size = sq_mesher_size(o, L->face_area);
     int S = qm_size_samples(o), sub = o->sizes ? USER_SIZE_SUB : 1, ns = S * sub;
     for (int e = 0; e < L->nedges; e++) {
-        double *c = &cum[(size_t)e * (S + 1)], prev = 1.0, r = 1.0;
+        double *c = &cum[(size_t)e * (S + 1)], prev = 1.0, r = 1.0, cprev = 1.0, cr = 1.0;
+        double count = 0.0;
         int elem = -1;
         c[0] = 0.0;
-        SQ_TRY(measure_weight(L, face, o, size, e, 0.0, &elem, &prev, err));
+        SQ_TRY(measure_weight(L, face, o, size, e, 0.0, &elem, &prev, &cprev, err));
         for (int k = 1; k <= S; k++) {
             double acc = c[k - 1];
             for (int j = (k - 1) * sub + 1; j <= k * sub; j++) {
-                SQ_TRY(measure_weight(L, face, o, size, e, (double)j / ns, &elem, &r, err));
+                SQ_TRY(measure_weight(L, face, o, size, e, (double)j / ns, &elem, &r, &cr, err));
                 acc += 0.5 * (prev + r) * L->edges[e].length / ns;
+                count += 0.5 * (cprev + cr) * L->edges[e].length / ns;
                 prev = r;
+                cprev = cr;
             }
             c[k] = acc;
         }
-        m[e] = c[S];
-    }
-    /* e^H is relative: scaled by c with c^2 the mean of e^{-2H} over the
-     * face (sampled on a grid), so that about area / size^2 quads result,
-     * as without it */
-    if (o->field && o->field->size) {
-        double sum = 0.0;
-        int cnt = 0, elem = -1;
-        for (int j = 0; j < SIZE_SAMPLES; j++)
-            for (int i = 0; i < SIZE_SAMPLES; i++) {
-                double x[2] = {info->bbox[0] + (i + 0.5) / SIZE_SAMPLES * (info->bbox[2] - info->bbox[0]),
-                               info->bbox[1] + (j + 0.5) / SIZE_SAMPLES * (info->bbox[3] - info->bbox[1])};
-                double sz = o->field->size(o->field->ctx, x, &elem);
-                if (sz <= 0.0) continue; /* outside */
-                sz = fmin(fmax(sz, 0.25), 4.0);
-                sum += 1.0 / (sz * sz);
-                cnt++;
-            }
-        double c = cnt ? sqrt(sum / cnt) : 1.0;
-        for (int e = 0; e < L->nedges; e++) {
-            m[e] /= c;
-            for (int k = 0; k <= S; k++) cum[(size_t)e * (S + 1) + k] /= c;
-        }
+        m[e] = count;
     }
     return SQ_OK;
 }

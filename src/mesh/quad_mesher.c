@@ -238,7 +238,7 @@ static sq_status mesh_layout(const cad_face *face, const sq_face_info *info, con
     double *elen = malloc(sizeof(double) * ((size_t)L->nedges + 1));
     double *cum = malloc(sizeof(double) * ((size_t)L->nedges * (S + 1) + 1));
     sq_status st = nseg && elen && cum ? SQ_OK : SQ_FAIL(err, SQ_ERR_INTERNAL, "out of memory");
-    if (st == SQ_OK) st = qm_size_measure(L, face, info, opt, elen, cum, err);
+    if (st == SQ_OK) st = qm_size_measure(L, face, opt, elen, cum, err);
     double *need = st == SQ_OK && opt->sizes
                        ? malloc(sizeof(double) * 2 * ((size_t)L->npatches + 1))
                        : NULL;

@@ -47,10 +47,11 @@ long qm_side_count(const sq_layout_patch *p, int k, const int *n);
 double qm_quantized_quads(const sq_layout *L, const int *n);
 /* Samples S of each edge's cumulative measure under options o. */
 int qm_size_samples(const sq_mesher_options *o);
-/* Each edge's measure m[e] and its cumulative values cum[e * (S + 1) + k],
- * S = qm_size_samples(o) (in units of the field's size where it carries
- * one). */
-sq_status qm_size_measure(const sq_layout *L, const cad_face *face, const sq_face_info *info,
+/* Each edge's measure m[e] (in units of the field's size where it carries
+ * one), which counts its segments, and the cumulative values cum[e * (S +
+ * 1) + k] of its measure without the field's size, which place its
+ * vertices; S = qm_size_samples(o). */
+sq_status qm_size_measure(const sq_layout *L, const cad_face *face,
                           const sq_mesher_options *o, double *m, double *cum, sq_error *err);
 /* Arc-length fraction where the cumulative measure cum[S + 1] reaches
  * fraction u. */
