@@ -47,16 +47,11 @@ static double polar_mean(const sq_cross_field *cf, int nr, int nt, int *outside)
 int main(void)
 {
     gsl_set_error_handler_off();
-    sq_error err;
     cad_model *m = NULL;
     cad_face *f = NULL;
-    sq_test_open_face("disc.step", &m, &f);
     sq_pattern p;
-    sq_test_natural_pattern(f, &p);
-    sq_htheta_options o;
-    sq_htheta_options_default(&o);
     sq_htheta ht;
-    SQ_TEST_OK(sq_htheta_compute(f, &p, &o, &ht, &err), err);
+    sq_test_natural_htheta("disc.step", &m, &f, &p, &ht);
     sq_cross_field cf = sq_htheta_cross_field(&ht);
     int fails = sq_check_int("disc", "points", ht.npoints, 4), outside = 0;
     /* the sizes vary: the scale matters (bounded e^H from 1/4 up) */

@@ -33,16 +33,11 @@
 
 static int square_hole(void)
 {
-    sq_error err;
     cad_model *m = NULL;
     cad_face *f = NULL;
-    sq_test_open_face("square_hole.step", &m, &f);
     sq_pattern p;
-    sq_test_natural_pattern(f, &p);
-    sq_htheta_options o;
-    sq_htheta_options_default(&o);
     sq_htheta ht;
-    SQ_TEST_OK(sq_htheta_compute(f, &p, &o, &ht, &err), err);
+    sq_test_natural_htheta("square_hole.step", &m, &f, &p, &ht);
     int fails = sq_check_int("square_hole", "points", ht.npoints, 4);
     for (int j = 0; j < ht.npoints; j++)
         fails += sq_check_abs("square_hole", "jump around a valence-5 point", ht.points[j].jump,

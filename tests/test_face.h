@@ -4,6 +4,7 @@
 
 #include "cad.h"
 #include "field_analysis.h"
+#include "htheta_field.h"
 #include "pattern.h"
 #include "test_util.h"
 
@@ -27,6 +28,19 @@ static inline void sq_test_natural_pattern(const cad_face *f, sq_pattern *p)
     SQ_TEST_OK(sq_field_analyse(f, &fo, &an, &err), err);
     SQ_TEST_OK(sq_pattern_from_analysis(f, &an, p, &err), err);
     sq_field_analysis_free(&an);
+}
+
+/* The H/θ field of example `file`'s natural pattern at the default
+ * options (the caller frees ht, p, f and m). */
+static inline void sq_test_natural_htheta(const char *file, cad_model **m, cad_face **f,
+                                          sq_pattern *p, sq_htheta *ht)
+{
+    sq_error err;
+    sq_test_open_face(file, m, f);
+    sq_test_natural_pattern(*f, p);
+    sq_htheta_options o;
+    sq_htheta_options_default(&o);
+    SQ_TEST_OK(sq_htheta_compute(*f, p, &o, ht, &err), err);
 }
 
 #endif
