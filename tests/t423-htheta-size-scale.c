@@ -12,7 +12,6 @@
  * converged value on this face (rules of degree 12 and 20 agree to 1e-4),
  * and the polar rule's own error is estimated by the difference of its
  * two resolutions.  Hence |mean - 1| <= 3e-3 + 2 |difference|. */
-#include "htheta_field.h"
 #include "test_face.h"
 
 #include <gsl/gsl_errno.h>
